@@ -1,0 +1,48 @@
+#pragma once
+// Building a Model and its initial State from plain descriptions. The app fills these from a
+// scene file; physics validates what only physics can judge and names the body and field.
+#include "physics/model.h"
+#include "physics/state.h"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tumble::physics {
+
+struct WorldDef {
+    Vec3 gravity = Vec3(0.0, 0.0, -9.81);
+    double dt = 1.0 / 240.0;
+    Integrator integrator = Integrator::Rk4;
+};
+
+struct BodyDef {
+    Shape shape;
+    Motion motion = Motion::Dynamic;
+    double mass = 1.0; // kg; ignored for static bodies
+    // Inertia tensor about the centre of mass in body axes, kg m^2. Unset: from shape and mass.
+    // May be non-diagonal; build_model() diagonalises it (principal moments + axes).
+    std::optional<Mat3> inertia;
+    Vec3 position = Vec3::Zero();             // body origin, world, m
+    Quat orientation = Quat::Identity();      // body -> world
+    Vec3 velocity = Vec3::Zero();             // world, m/s
+    Vec3 angular_velocity = Vec3::Zero();     // world, rad/s
+    double gravity_scale = 1.0;
+    Vec3 applied_force = Vec3::Zero();        // constant, world, N
+    Vec3 applied_torque = Vec3::Zero();       // constant, world, N m
+};
+
+// Thrown for a definition physics cannot simulate. `body` is the index (-1 for the world) and
+// `field` names the offending field as the scene format spells it (e.g. "inertia", "mass").
+struct ModelError : std::runtime_error {
+    ModelError(int body, std::string field, const std::string& what)
+        : std::runtime_error(what), body(body), field(std::move(field)) {}
+    int body;
+    std::string field;
+};
+
+Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies);
+State initial_state(const Model& model, const std::vector<BodyDef>& bodies);
+
+} // namespace tumble::physics

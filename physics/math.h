@@ -1,0 +1,36 @@
+#pragma once
+// Small vector and rotation helpers on top of Eigen. Notation follows the course notes:
+// [a]x is the skew matrix with [a]x b = a x b; q (x) p is the quaternion product.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace tumble::physics {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+// [a]x = [[0, -az, ay], [az, 0, -ax], [-ay, ax, 0]]
+inline Mat3 skew(const Vec3& a) {
+    Mat3 m;
+    m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+    return m;
+}
+
+// exp of the rotation vector phi: the unit quaternion (cos(|phi|/2), sin(|phi|/2) phi/|phi|).
+// Exact for any angle; below 1e-4 rad the Taylor series keeps sin(x)/x accurate to round-off.
+Quat quat_exp(const Vec3& phi);
+
+// Rotation vector of a unit quaternion (inverse of quat_exp), angle in [0, pi].
+Vec3 quat_log(const Quat& q);
+
+// Angle of the rotation between two orientations, |log(a^-1 b)|, in [0, pi] radians.
+double rotation_angle_between(const Quat& a, const Quat& b);
+
+// Quaternion time derivative for world angular velocity w: dq/dt = 1/2 (0, w) (x) q.
+Quat quat_derivative(const Vec3& w, const Quat& q);
+
+inline bool all_finite(const Vec3& v) { return v.allFinite(); }
+inline bool all_finite(const Quat& q) { return q.coeffs().allFinite(); }
+
+} // namespace tumble::physics

@@ -1,0 +1,60 @@
+#pragma once
+// Model: what the scene *is* (MuJoCo's mjModel). Built once by build_model(), read-only while
+// stepping. Bodies are integer handles 0..body_count()-1 into flat arrays (Box2D's ids).
+//
+// Each dynamic body is simulated in its *mass frame*: origin at the centre of mass, axes along
+// the principal axes of inertia. There the inertia is diagonal, I_body = diag(I1, I2, I3), and the
+// world inertia is I_w = R I_body R^T with R the mass frame's orientation; we keep the three
+// principal moments and never form or invert I_w (Jolt's storage):
+//   I_w^-1 v = R (I_body^-1 (R^T v)).
+// The body frame the user wrote (and the renderer draws) relates to the mass frame by the fixed
+// `body_from_mass` rotation and `com_offset`; for spheres and boxes both are identity.
+#include "physics/integrator.h"
+#include "physics/math.h"
+#include "physics/shape.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tumble::physics {
+
+enum class Motion : std::uint8_t { Static, Dynamic };
+
+// Which stages step() runs, decided once from what the scene contains ("model only what a scene
+// requires"). Each flag says why in `tumble explain`.
+struct Passes {
+    bool gravity = false;         // some dynamic body feels a non-zero g * gravity_scale
+    bool applied_loads = false;   // some dynamic body has a constant applied force or torque
+    bool gyroscopic = false;      // some dynamic body has anisotropic inertia (w x I w != 0)
+};
+
+struct Model {
+    // World parameters.
+    Vec3 gravity = Vec3(0.0, 0.0, -9.81); // m/s^2
+    double dt = 1.0 / 240.0;              // s, the step h
+    Integrator integrator = Integrator::Rk4;
+
+    // Per-body parameters, indexed by body handle.
+    std::vector<Shape> shape;
+    std::vector<Motion> motion;
+    std::vector<double> mass;          // kg (0 for static)
+    std::vector<double> inv_mass;      // 1/kg (0 for static)
+    std::vector<Vec3> inertia;         // principal moments (I1, I2, I3), kg m^2, mass frame
+    std::vector<Vec3> inv_inertia;     // (1/I1, 1/I2, 1/I3); 0 for static
+    std::vector<std::uint8_t> isotropic; // I1 == I2 == I3 exactly: w x I w = 0 for every w
+    std::vector<double> gravity_scale; // multiplies gravity for this body (1 = normal)
+    std::vector<Vec3> applied_force;   // constant world-frame force at the centre of mass, N
+    std::vector<Vec3> applied_torque;  // constant world-frame torque, N m
+    std::vector<Quat> body_from_mass;  // rotation taking mass-frame axes to body-frame axes
+    std::vector<Vec3> com_offset;      // centre of mass in the body frame, m
+
+    // Dynamic bodies only: the loops of the integrators run over this list.
+    std::vector<int> dynamic_bodies;
+
+    Passes passes;
+
+    int body_count() const { return static_cast<int>(shape.size()); }
+    bool is_dynamic(int body) const { return motion[body] == Motion::Dynamic; }
+};
+
+} // namespace tumble::physics

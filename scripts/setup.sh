@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Tumble needs (only those missing), then configures and builds
+# one CMake preset. Idempotent: a second run installs nothing and rebuilds nothing that is current.
+#   scripts/setup.sh [preset]      preset: release (default), debug, asan
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+
+# Exact package list: build tools, libraries, test and benchmark frameworks, and ffprobe for tests.
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev libboost-math-dev
+  libosmesa6-dev libglm-dev libstb-dev libpng-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  ffmpeg
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "tumble setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -f "build/$preset/build.ninja" ]; then
+  cmake --preset "$preset" >&2
+fi
+cmake --build --preset "$preset" >&2
