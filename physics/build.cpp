@@ -60,9 +60,11 @@ void validate_moments(const Vec3& m, int body) {
 // whose columns are the principal axes in body coordinates (a proper rotation, det = +1).
 Vec3 principal_axes(const Mat3& tensor, Quat& body_from_mass, int body) {
     require(tensor.allFinite(), body, "inertia", "inertia tensor must be finite");
-    require((tensor - tensor.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * tensor.cwiseAbs().maxCoeff(),
+    require((tensor - tensor.transpose()).cwiseAbs().maxCoeff() <=
+                1e-12 * tensor.cwiseAbs().maxCoeff(),
             body, "inertia", "inertia tensor must be symmetric");
-    const bool diagonal = (tensor - Mat3(tensor.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0;
+    const bool diagonal =
+        (tensor - Mat3(tensor.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0;
     if (diagonal) {
         body_from_mass = Quat::Identity();
         return tensor.diagonal();
@@ -108,7 +110,8 @@ Passes decide_passes(const Model& m) {
     Passes p;
     for (int i : m.dynamic_bodies) {
         p.gravity |= m.gravity_scale[i] != 0.0 && m.gravity != Vec3::Zero();
-        p.applied_loads |= m.applied_force[i] != Vec3::Zero() || m.applied_torque[i] != Vec3::Zero();
+        p.applied_loads |=
+            m.applied_force[i] != Vec3::Zero() || m.applied_torque[i] != Vec3::Zero();
         p.gyroscopic |= !m.isotropic[i];
     }
     return p;
@@ -140,7 +143,8 @@ State initial_state(const Model& model, const std::vector<BodyDef>& bodies) {
         require(b.orientation.coeffs().allFinite() && b.orientation.norm() > 0.0, i, "orientation",
                 "orientation must be a finite, non-zero quaternion");
         require(b.velocity.allFinite(), i, "velocity", "velocity must be finite");
-        require(b.angular_velocity.allFinite(), i, "angular_velocity", "angular velocity must be finite");
+        require(b.angular_velocity.allFinite(), i, "angular_velocity",
+                "angular velocity must be finite");
         const Quat body_q = b.orientation.normalized();
         s.q[i] = (body_q * model.body_from_mass[i]).normalized();
         s.x[i] = b.position + body_q * model.com_offset[i];

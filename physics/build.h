@@ -24,13 +24,13 @@ struct BodyDef {
     // Inertia tensor about the centre of mass in body axes, kg m^2. Unset: from shape and mass.
     // May be non-diagonal; build_model() diagonalises it (principal moments + axes).
     std::optional<Mat3> inertia;
-    Vec3 position = Vec3::Zero();             // body origin, world, m
-    Quat orientation = Quat::Identity();      // body -> world
-    Vec3 velocity = Vec3::Zero();             // world, m/s
-    Vec3 angular_velocity = Vec3::Zero();     // world, rad/s
+    Vec3 position = Vec3::Zero();         // body origin, world, m
+    Quat orientation = Quat::Identity();  // body -> world
+    Vec3 velocity = Vec3::Zero();         // world, m/s
+    Vec3 angular_velocity = Vec3::Zero(); // world, rad/s
     double gravity_scale = 1.0;
-    Vec3 applied_force = Vec3::Zero();        // constant, world, N
-    Vec3 applied_torque = Vec3::Zero();       // constant, world, N m
+    Vec3 applied_force = Vec3::Zero();  // constant, world, N
+    Vec3 applied_torque = Vec3::Zero(); // constant, world, N m
 };
 
 // Thrown for a definition physics cannot simulate. `body` is the index (-1 for the world) and

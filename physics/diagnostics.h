@@ -10,9 +10,9 @@
 namespace tumble::physics {
 
 struct Diagnostics {
-    double kinetic_linear = 0.0;  // J
-    double kinetic_angular = 0.0; // J
-    double potential = 0.0;       // J, gravitational, zero at the world origin
+    double kinetic_linear = 0.0;          // J
+    double kinetic_angular = 0.0;         // J
+    double potential = 0.0;               // J, gravitational, zero at the world origin
     Vec3 linear_momentum = Vec3::Zero();  // kg m/s
     Vec3 angular_momentum = Vec3::Zero(); // kg m^2/s, world frame, about the origin
 

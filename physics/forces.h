@@ -11,6 +11,8 @@ inline Vec3 net_force(const Model& m, int i) {
     return m.mass[i] * m.gravity_scale[i] * m.gravity + m.applied_force[i];
 }
 
-inline Vec3 net_torque(const Model& m, int i) { return m.applied_torque[i]; }
+inline Vec3 net_torque(const Model& m, int i) {
+    return m.applied_torque[i];
+}
 
 } // namespace tumble::physics

@@ -10,7 +10,9 @@ constexpr IntegratorInfo kIntegrators[] = {
 
 } // namespace
 
-std::span<const IntegratorInfo> integrators() { return kIntegrators; }
+std::span<const IntegratorInfo> integrators() {
+    return kIntegrators;
+}
 
 const IntegratorInfo& integrator_info(Integrator id) {
     for (const IntegratorInfo& info : kIntegrators)

@@ -48,14 +48,15 @@ void integrate_rk4(const Model& m, State& s, double h) {
                                w + 0.5 * h * k1.dw, accel, tau);
         const Rates k3 = rates(m, i, v + 0.5 * h * k2.dv, add_scaled(q, 0.5 * h, k2.dq),
                                w + 0.5 * h * k2.dw, accel, tau);
-        const Rates k4 = rates(m, i, v + h * k3.dv, add_scaled(q, h, k3.dq), w + h * k3.dw, accel,
-                               tau);
+        const Rates k4 =
+            rates(m, i, v + h * k3.dv, add_scaled(q, h, k3.dq), w + h * k3.dw, accel, tau);
 
         const double c = h / 6.0;
         s.x[i] = x + c * (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx);
         s.v[i] = v + c * (k1.dv + 2.0 * k2.dv + 2.0 * k3.dv + k4.dv);
         s.w[i] = w + c * (k1.dw + 2.0 * k2.dw + 2.0 * k3.dw + k4.dw);
-        const Quat dq(k1.dq.coeffs() + 2.0 * k2.dq.coeffs() + 2.0 * k3.dq.coeffs() + k4.dq.coeffs());
+        const Quat dq(k1.dq.coeffs() + 2.0 * k2.dq.coeffs() + 2.0 * k3.dq.coeffs() +
+                      k4.dq.coeffs());
         s.q[i] = add_scaled(q, c, dq).normalized();
     }
 }

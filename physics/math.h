@@ -30,7 +30,11 @@ double rotation_angle_between(const Quat& a, const Quat& b);
 // Quaternion time derivative for world angular velocity w: dq/dt = 1/2 (0, w) (x) q.
 Quat quat_derivative(const Vec3& w, const Quat& q);
 
-inline bool all_finite(const Vec3& v) { return v.allFinite(); }
-inline bool all_finite(const Quat& q) { return q.coeffs().allFinite(); }
+inline bool all_finite(const Vec3& v) {
+    return v.allFinite();
+}
+inline bool all_finite(const Quat& q) {
+    return q.coeffs().allFinite();
+}
 
 } // namespace tumble::physics

@@ -23,9 +23,9 @@ enum class Motion : std::uint8_t { Static, Dynamic };
 // Which stages step() runs, decided once from what the scene contains ("model only what a scene
 // requires"). Each flag says why in `tumble explain`.
 struct Passes {
-    bool gravity = false;         // some dynamic body feels a non-zero g * gravity_scale
-    bool applied_loads = false;   // some dynamic body has a constant applied force or torque
-    bool gyroscopic = false;      // some dynamic body has anisotropic inertia (w x I w != 0)
+    bool gravity = false;       // some dynamic body feels a non-zero g * gravity_scale
+    bool applied_loads = false; // some dynamic body has a constant applied force or torque
+    bool gyroscopic = false;    // some dynamic body has anisotropic inertia (w x I w != 0)
 };
 
 struct Model {
@@ -37,16 +37,16 @@ struct Model {
     // Per-body parameters, indexed by body handle.
     std::vector<Shape> shape;
     std::vector<Motion> motion;
-    std::vector<double> mass;          // kg (0 for static)
-    std::vector<double> inv_mass;      // 1/kg (0 for static)
-    std::vector<Vec3> inertia;         // principal moments (I1, I2, I3), kg m^2, mass frame
-    std::vector<Vec3> inv_inertia;     // (1/I1, 1/I2, 1/I3); 0 for static
+    std::vector<double> mass;            // kg (0 for static)
+    std::vector<double> inv_mass;        // 1/kg (0 for static)
+    std::vector<Vec3> inertia;           // principal moments (I1, I2, I3), kg m^2, mass frame
+    std::vector<Vec3> inv_inertia;       // (1/I1, 1/I2, 1/I3); 0 for static
     std::vector<std::uint8_t> isotropic; // I1 == I2 == I3 exactly: w x I w = 0 for every w
-    std::vector<double> gravity_scale; // multiplies gravity for this body (1 = normal)
-    std::vector<Vec3> applied_force;   // constant world-frame force at the centre of mass, N
-    std::vector<Vec3> applied_torque;  // constant world-frame torque, N m
-    std::vector<Quat> body_from_mass;  // rotation taking mass-frame axes to body-frame axes
-    std::vector<Vec3> com_offset;      // centre of mass in the body frame, m
+    std::vector<double> gravity_scale;   // multiplies gravity for this body (1 = normal)
+    std::vector<Vec3> applied_force;     // constant world-frame force at the centre of mass, N
+    std::vector<Vec3> applied_torque;    // constant world-frame torque, N m
+    std::vector<Quat> body_from_mass;    // rotation taking mass-frame axes to body-frame axes
+    std::vector<Vec3> com_offset;        // centre of mass in the body frame, m
 
     // Dynamic bodies only: the loops of the integrators run over this list.
     std::vector<int> dynamic_bodies;

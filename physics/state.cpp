@@ -4,7 +4,9 @@
 
 namespace tumble::physics {
 
-double State::time(const Model& model) const { return static_cast<double>(step) * model.dt; }
+double State::time(const Model& model) const {
+    return static_cast<double>(step) * model.dt;
+}
 
 Pose body_pose(const Model& model, const State& state, int body) {
     const Quat orientation = state.q[body] * model.body_from_mass[body].conjugate();

@@ -23,7 +23,9 @@ void check_finite(const Model& m, const State& s) {
 void step(const Model& m, State& s) {
     const double h = m.dt;
     switch (m.integrator) {
-    case Integrator::Rk4: integrate_rk4(m, s, h); break;
+    case Integrator::Rk4:
+        integrate_rk4(m, s, h);
+        break;
     }
     ++s.step;
     check_finite(m, s);

@@ -22,7 +22,8 @@ std::vector<BodyDef> tumbling_scene() {
 
 bool bit_equal(const State& a, const State& b) {
     auto same = [](const auto& u, const auto& v) {
-        return u.size() == v.size() && std::memcmp(u.data(), v.data(), sizeof(u[0]) * u.size()) == 0;
+        return u.size() == v.size() &&
+               std::memcmp(u.data(), v.data(), sizeof(u[0]) * u.size()) == 0;
     };
     return a.step == b.step && same(a.x, b.x) && same(a.q, b.q) && same(a.v, b.v) && same(a.w, b.w);
 }

@@ -28,7 +28,9 @@ void run(World& w, int steps) {
     for (int k = 0; k < steps; ++k) step(w.model, w.state);
 }
 
-double rel(const Vec3& a, const Vec3& b) { return (a - b).norm() / b.norm(); }
+double rel(const Vec3& a, const Vec3& b) {
+    return (a - b).norm() / b.norm();
+}
 
 TEST(FreeMotion, ProjectileMatchesExactParabola) {
     // x(t) = x0 + v0 t + 1/2 g t^2 and v(t) = v0 + g t, at t = 2 s after 480 steps of 1/240 s.

@@ -1,0 +1,77 @@
+// tumble: rigid bodies stepped by a small exact physics core, drawn headlessly with OSMesa.
+#include "app/commands.h"
+#include "render/frame_sink.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+namespace {
+
+using namespace tumble::app;
+
+void add_scene_options(CLI::App* cmd, SceneOptions& o) {
+    cmd->add_option("scene", o.scene,
+                    "scene file, or a built-in scene name (default: the built-in default)");
+    cmd->add_option("--integrator", o.integrator, "override the scene's integrator");
+    cmd->add_option("--duration", o.duration, "override the scene's duration, s");
+    cmd->add_option("--dt", o.dt, "override the scene's time step, s");
+    cmd->add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"tumble: rigid-body dynamics rendered headlessly to video or PNG"};
+    app.require_subcommand(0, 1);
+    bool version = false;
+    app.add_flag("--version", version, "print the version and the OpenGL renderer, then exit");
+
+    RenderCommand render;
+    CLI::App* r = app.add_subcommand(
+        "render", "simulate a scene and render it to MP4, PNG frames or a still");
+    add_scene_options(r, render.common);
+    r->add_option("-o,--output", render.output,
+                  "out.mp4 | frames/ | frames/%06d.png | still.png (default: <scene>.mp4)");
+    r->add_option("--width", render.width, "image width, pixels (even for MP4)");
+    r->add_option("--height", render.height, "image height, pixels (even for MP4)");
+    r->add_option("--fps", render.fps, "frames per second");
+    r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
+    r->add_option("--crf", render.crf, "H.264 quality, 0 (lossless) .. 51 (worst)")
+        ->check(CLI::Range(0, 51));
+    r->add_option("--preset", render.preset, "libx264 preset (ultrafast .. veryslow)");
+
+    SimulateCommand simulate;
+    CLI::App* s = app.add_subcommand(
+        "simulate", "step a scene without rendering; write states and diagnostics as CSV");
+    add_scene_options(s, simulate.common);
+    s->add_option("-o,--output", simulate.output,
+                  "states CSV (diagnostics go to <stem>.diagnostics.csv)")
+        ->required();
+    s->add_option("--every", simulate.every, "write every N-th step (default 1)")
+        ->check(CLI::PositiveNumber);
+
+    SceneOptions explain;
+    CLI::App* e =
+        app.add_subcommand("explain", "print the model that will run and which stages are on");
+    add_scene_options(e, explain);
+
+    app.add_subcommand("scenes", "list the built-in scenes");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& h) {
+        return app.exit(h);
+    } catch (const CLI::ParseError& err) {
+        app.exit(err);
+        return kBadInput;
+    }
+    tumble::render::quiet_video_logs();
+    if (version) return run_version();
+    if (r->parsed()) return run_render(render);
+    if (s->parsed()) return run_simulate(simulate);
+    if (e->parsed()) return run_explain(explain);
+    if (app.got_subcommand("scenes")) return run_list_scenes();
+    std::fputs(app.help().c_str(), stdout);
+    return kOk;
+}

@@ -1,0 +1,47 @@
+#pragma once
+// A scene as loaded from a file: the physics description (world + bodies), and how to draw it.
+// The format is documented field by field in docs/scene-format.md.
+#include "physics/build.h"
+#include "render/scene_view.h"
+
+#include <string>
+#include <vector>
+
+namespace tumble::app {
+
+struct BodyLook {
+    std::string name;                  // from the scene, or "body <i>"
+    glm::vec3 color{0.8f, 0.8f, 0.8f}; // sRGB
+    float plane_extent = 20.0f;        // drawn side length of a plane, m
+};
+
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    int fps = 60;
+    render::Camera camera;
+    render::Light light;
+    glm::vec3 background{0.62f, 0.72f, 0.85f};
+};
+
+struct Scene {
+    std::string source; // file path, or "builtin:<name>" for an embedded scene
+    std::string title;
+    physics::WorldDef world;
+    double duration = 10.0; // s of simulated (and rendered) time
+    std::vector<physics::BodyDef> bodies;
+    std::vector<BodyLook> looks; // one per body
+    RenderSettings render;
+};
+
+// Loads a scene from JSON text; `source` names it in error messages. Throws SceneError.
+Scene load_scene(const std::string& text, const std::string& source);
+
+// Resolves a scene argument: an existing file path, or the name of a built-in scene ("default",
+// "default.json"). An empty argument means the built-in default scene. Throws SceneError.
+Scene load_scene_argument(const std::string& argument);
+
+// Names of the built-in scenes (without .json).
+std::vector<std::string> builtin_scene_names();
+
+} // namespace tumble::app

@@ -1,0 +1,129 @@
+// Scene file -> Scene. The format is documented in docs/scene-format.md; keep the two in step.
+#include "app/assets.h"
+#include "app/body_loader.h"
+#include "app/scene.h"
+#include "app/scene_values.h"
+#include "app/simulation.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace tumble::app {
+namespace {
+
+constexpr int kFormatVersion = 1;
+
+void read_world(JsonReader r, Scene& s) {
+    if (auto g = r.optional("gravity"))
+        s.world.gravity = read_vec3(*g, "gravity [x, y, z] in m/s^2");
+    if (auto dt = r.optional("dt")) s.world.dt = dt->positive("a positive time step in seconds");
+    if (auto d = r.optional("duration")) s.duration = d->positive("a positive duration in seconds");
+    if (auto i = r.optional("integrator")) {
+        const std::string name = i->string();
+        const auto id = physics::integrator_from_name(name);
+        if (!id)
+            i->fail("unknown integrator \"" + name +
+                    "\"; valid integrators: " + physics::integrator_names());
+        s.world.integrator = *id;
+    }
+    r.finish();
+}
+
+void read_camera(JsonReader r, render::Camera& c) {
+    if (auto p = r.optional("position"))
+        c.position = read_glm_vec3(*p, "a camera position in metres");
+    if (auto t = r.optional("target")) c.target = read_glm_vec3(*t, "a camera target in metres");
+    if (auto u = r.optional("up")) c.up = read_glm_vec3(*u, "an up direction");
+    if (auto f = r.optional("fov_deg")) {
+        const double fov = f->positive("a vertical field of view in degrees");
+        if (fov >= 179.0) f->fail("expected a vertical field of view below 179 degrees");
+        c.fov_y_deg = static_cast<float>(fov);
+    }
+    if (glm::length(c.position - c.target) == 0.0f) r.fail("camera position and target coincide");
+    r.finish();
+}
+
+void read_light(JsonReader r, render::Light& l) {
+    if (auto d = r.optional("direction")) {
+        l.direction = read_glm_vec3(*d, "the direction the light travels [x, y, z]");
+        if (glm::length(l.direction) == 0.0f) d->fail("expected a non-zero light direction");
+    }
+    if (auto c = r.optional("color")) l.color = read_color(*c);
+    if (auto a = r.optional("ambient"))
+        l.ambient = static_cast<float>(a->non_negative("a non-negative ambient fraction"));
+    r.finish();
+}
+
+void read_render(JsonReader r, RenderSettings& rs) {
+    if (auto w = r.optional("width")) rs.width = w->integer(16, 7680, "an image width in pixels");
+    if (auto h = r.optional("height"))
+        rs.height = h->integer(16, 4320, "an image height in pixels");
+    if (auto f = r.optional("fps")) rs.fps = f->integer(1, 1000, "frames per second");
+    if (auto c = r.optional("camera")) read_camera(*c, rs.camera);
+    if (auto l = r.optional("light")) read_light(*l, rs.light);
+    if (auto b = r.optional("background")) rs.background = read_color(*b);
+    r.finish();
+}
+
+} // namespace
+
+Scene load_scene(const std::string& text, const std::string& source) {
+    const nlohmann::json root = parse_json(text, source);
+    JsonReader r(root, source, "");
+    if (!root.is_object()) r.fail("expected a scene object { \"format_version\": 1, ... }");
+    const int version = r.field("format_version").integer(1, 1000, "the scene format version");
+    if (version != kFormatVersion)
+        r.field("format_version")
+            .fail("this tumble reads format_version " + std::to_string(kFormatVersion) + ", got " +
+                  std::to_string(version));
+    Scene s;
+    s.source = source;
+    if (auto t = r.optional("title")) s.title = t->string();
+    if (auto w = r.optional("world")) read_world(*w, s);
+    if (auto rs = r.optional("render")) read_render(*rs, s.render);
+    JsonReader bodies = r.field("bodies");
+    const std::size_t n = bodies.size();
+    s.bodies.resize(n);
+    s.looks.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        read_body(bodies.at(i), static_cast<int>(i), s.bodies[i], s.looks[i]);
+    r.finish();
+    (void)make_simulation(s, s.world.dt); // physics validation, mapped to JSON paths
+    return s;
+}
+
+std::vector<std::string> builtin_scene_names() {
+    std::vector<std::string> out;
+    for (std::string_view name : assets::names()) {
+        std::string n(name);
+        if (n.size() > 5 && n.ends_with(".json")) out.push_back(n.substr(0, n.size() - 5));
+    }
+    return out;
+}
+
+Scene load_scene_argument(const std::string& argument) {
+    const std::string arg = argument.empty() ? "default" : argument;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(arg, ec)) {
+        std::ifstream in(arg, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in.good() && !in.eof()) throw SceneError(arg, "file", "cannot read the file");
+        return load_scene(text.str(), arg);
+    }
+    const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
+    const std::string_view builtin = assets::find(std::filesystem::path(file).filename().string());
+    if (!builtin.empty() && arg.find('/') == std::string::npos)
+        return load_scene(std::string(builtin), "builtin:" + file);
+    std::string names;
+    for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+    throw SceneError(arg, "file",
+                     std::filesystem::exists(arg, ec)
+                         ? "not a regular file"
+                         : "no such file, and no built-in scene of that name "
+                           "(built-in scenes: " +
+                               names + ")");
+}
+
+} // namespace tumble::app

@@ -1,0 +1,29 @@
+#pragma once
+// When frames are taken. Frame k shows the state at exactly t_k = k / fps: the physics step is
+// chosen so that a whole number of steps fits in one frame interval,
+//   steps_per_frame = ceil((1/fps) / dt_scene),   h = 1 / (fps * steps_per_frame) <= dt_scene,
+// and frame k is taken after k * steps_per_frame steps, so t_k = k * steps_per_frame * h has one
+// rounding and no drift. When h differs from the scene's dt the run says so (never silently).
+#include <cstdint>
+#include <string>
+
+namespace tumble::app {
+
+struct Timeline {
+    int fps = 60;
+    int steps_per_frame = 1;
+    double h = 0.0;          // the step actually used, s
+    double scene_dt = 0.0;   // the step the scene asked for, s
+    std::int64_t frames = 0; // frame 0 at t = 0 .. frame frames-1 at t = (frames-1)/fps
+
+    bool adjusted() const { return h != scene_dt; }
+    double frame_time(std::int64_t k) const { return static_cast<double>(k) / fps; }
+    std::int64_t total_steps() const { return (frames - 1) * steps_per_frame; }
+    std::string describe() const; // one line for summaries and `tumble explain`
+};
+
+// frames = round(duration * fps), at least 1: a 10 s clip at 60 fps has 600 frames and lasts
+// exactly 10 s in the container.
+Timeline make_timeline(double scene_dt, double duration, int fps);
+
+} // namespace tumble::app

@@ -1,0 +1,53 @@
+#include "app/view_builder.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace tumble::app {
+namespace {
+
+// Unit mesh -> body frame scale: unit sphere radius 1, unit box [-1, 1]^3, unit plane 2 x 2.
+glm::vec3 mesh_scale(const physics::Shape& s, const BodyLook& look) {
+    switch (s.kind) {
+    case physics::ShapeKind::Sphere:
+        return glm::vec3(static_cast<float>(s.radius));
+    case physics::ShapeKind::Box:
+        return glm::vec3(s.half_extents.x(), s.half_extents.y(), s.half_extents.z());
+    case physics::ShapeKind::Plane:
+        return glm::vec3(0.5f * look.plane_extent, 0.5f * look.plane_extent, 1.0f);
+    }
+    return glm::vec3(1.0f);
+}
+
+render::MeshKind mesh_kind(physics::ShapeKind k) {
+    switch (k) {
+    case physics::ShapeKind::Sphere:
+        return render::MeshKind::Sphere;
+    case physics::ShapeKind::Box:
+        return render::MeshKind::Box;
+    case physics::ShapeKind::Plane:
+        return render::MeshKind::Plane;
+    }
+    return render::MeshKind::Sphere;
+}
+
+} // namespace
+
+void build_view(const Scene& scene, const physics::Model& model, const physics::State& state,
+                render::SceneView& view) {
+    view.camera = scene.render.camera;
+    view.light = scene.render.light;
+    view.background = scene.render.background;
+    view.instances.clear();
+    for (int i = 0; i < model.body_count(); ++i) {
+        const physics::Pose pose = physics::body_pose(model, state, i);
+        const glm::dquat q(pose.orientation.w(), pose.orientation.x(), pose.orientation.y(),
+                           pose.orientation.z());
+        glm::mat4 m = glm::mat4(glm::mat4_cast(q)); // rotation, computed in double then rounded
+        m[3] = glm::vec4(pose.position.x(), pose.position.y(), pose.position.z(), 1.0);
+        m = m * glm::scale(glm::mat4(1.0f), mesh_scale(model.shape[i], scene.looks[i]));
+        view.instances.push_back({mesh_kind(model.shape[i].kind), m, scene.looks[i].color});
+    }
+}
+
+} // namespace tumble::app
