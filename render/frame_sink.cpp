@@ -1,0 +1,75 @@
+// open_sink: picks the sink from the output name (see frame_sink.h for the rules).
+#include "render/frame_sink.h"
+
+#include "render/mp4_sink.h"
+#include "render/png_sink.h"
+
+extern "C" {
+#include <libavutil/log.h>
+}
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace tumble::render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+const char* const kSupported =
+    "supported outputs: NAME.mp4 (H.264 video), NAME.png (one still), a directory such as "
+    "frames/ (PNG sequence 000000.png, 000001.png ...), or a pattern such as frames/%06d.png";
+
+} // namespace
+
+std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOptions& options) {
+    if (output.empty()) throw SinkError(std::string("no output given; ") + kSupported);
+    std::error_code ec;
+    if (output.back() == '/' || fs::is_directory(output, ec)) {
+        return std::make_unique<PngSequenceSink>(FramePattern::in_directory(output), options);
+    }
+    const std::string ext = lowercase(fs::path(output).extension().string());
+    if (std::optional<FramePattern> pattern = FramePattern::parse(output)) {
+        if (!lowercase(pattern->suffix).ends_with(".png")) {
+            throw SinkError("cannot write '" + output + "': numbered outputs are PNG only (" +
+                            "e.g. frames/%06d.png); " + kSupported);
+        }
+        return std::make_unique<PngSequenceSink>(std::move(*pattern), options);
+    }
+    if (ext == ".mp4") return std::make_unique<Mp4Sink>(output, options);
+    if (ext == ".png") return std::make_unique<PngStillSink>(output, options);
+    throw SinkError("cannot write '" + output + "': unknown output type" +
+                    (ext.empty() ? std::string() : " '" + ext + "'") + "; " + kSupported);
+}
+
+void quiet_video_logs() {
+    av_log_set_level(AV_LOG_WARNING);
+}
+
+namespace detail {
+
+void check_frame(const std::string& output, const Image& image, int width, int height) {
+    const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
+        throw SinkError("cannot write to '" + output + "': the frame is empty or its pixel " +
+                        "buffer does not match its size " + size(image.width, image.height));
+    }
+    if ((width > 0 && image.width != width) || (height > 0 && image.height != height)) {
+        throw SinkError("cannot write to '" + output + "': the frame is " +
+                        size(image.width, image.height) + " but the output is " +
+                        size(width, height));
+    }
+}
+
+} // namespace detail
+
+} // namespace tumble::render

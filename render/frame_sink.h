@@ -1,0 +1,84 @@
+#pragma once
+// Where rendered frames go. The output name chooses the sink:
+//   *.mp4                      H.264 (libx264, yuv420p, BT.709 limited range) in MP4
+//   a directory (existing, or a name ending in '/')   PNG sequence dir/000000.png, 000001.png ...
+//   a name with a printf integer pattern, e.g. frames/%06d.png or shot_%04d.png   PNG sequence
+//   *.png (no pattern)         a single still: exactly one frame
+// Every file is written under a temporary name in the same directory and renamed only when it is
+// complete, so an interrupted or failed run never leaves a half-written file behind. A missing
+// output directory is created (one level: its parent must exist).
+//
+// Typical use (the app's render loop; Ctrl-C sets a flag, the loop stops and calls finish()):
+//   auto sink = open_sink("out/default.mp4", {.width = 1280, .height = 720, .fps = 60});
+//   for (...) { renderer.draw(view, image); sink->write(image); }
+//   sink->finish();            // on an exception instead, the destructor deletes the partial file
+#include "render/image.h"
+#include "render/png_io.h"
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace tumble::render {
+
+struct SinkError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct SinkOptions {
+    int width = 0;  // required for *.mp4; for PNG sinks 0 means "whatever the first frame has"
+    int height = 0; // (every frame must then have the same size)
+    int fps = 60;   // frames per second; the container time base is 1/fps
+    int crf = 18;   // H.264 constant rate factor (0 lossless .. 51 worst)
+    std::string preset = "veryfast"; // libx264 preset, ultrafast .. placebo
+    // libx264 threads. The count is part of the output: x264 records its settings (threads=N)
+    // in the stream, and frame threads limit motion search to rows other threads have
+    // finished; measured on fast vertical motion, 3 threads (x264's automatic choice on 2
+    // cores) gave a quite different stream from 1 or 2. A fixed count therefore gives the same
+    // bytes on every machine for the same frames; 0 lets x264 pick 1.5 per core, and the bytes
+    // then depend on the machine. On a 2-core machine 1 thread measured as fast as 2 and faster
+    // than 3 at 1280x720, and it leaves the other core to the renderer.
+    int threads = 1;
+    // Extra libx264 settings, "key=value:key=value" (x264 --fullhelp), for experiments. Added
+    // after the sink's own "cpu-independent=1" (see mp4_sink.h), so they can override it.
+    std::string x264_params;
+    PngWriteOptions png; // encoder and zlib level of PNG sinks
+};
+
+class FrameSink {
+  public:
+    virtual ~FrameSink() = default;
+    // Frame k is shown at t = k / fps. Frames arrive in order starting at 0. Throws SinkError
+    // when the image has the wrong size or cannot be written; the caller then calls abort() (or
+    // lets the destructor do it).
+    virtual void write(const Image& image) = 0;
+    // Completes the output (trailer, rename) so it plays or opens. Call once. Throws SinkError,
+    // after deleting the partial output, when that fails or when no frame was written (there is
+    // nothing to save).
+    virtual void finish() = 0;
+    // Deletes whatever was written so far (for a PNG sequence: the frames this sink wrote, and
+    // the directory if the sink created it and it is now empty). Called on errors; the
+    // destructor calls it if neither finish() nor abort() ran. Never throws.
+    virtual void abort() noexcept = 0;
+    // Final path(s) for messages, e.g. "out/default.mp4" or "frames/%06d.png".
+    virtual std::string describe() const = 0;
+    virtual std::int64_t frames_written() const = 0;
+};
+
+// Chooses and opens the sink for `output`. Throws SinkError naming the output and the problem
+// (odd dimensions for H.264, unwritable directory, unknown extension ...).
+std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOptions& options);
+
+// libavcodec and libx264 log to stderr at "info" level by default (CPU flags, statistics at the
+// end of every encode). This lowers FFmpeg's process-wide log level to warnings and errors. The
+// setting is global to the process, so only main() should call it, once, before encoding.
+void quiet_video_logs();
+
+namespace detail {
+// Throws SinkError naming `output` unless `image` is non-empty, its pixel buffer matches its size,
+// and it is `width` x `height` (when those are > 0).
+void check_frame(const std::string& output, const Image& image, int width, int height);
+} // namespace detail
+
+} // namespace tumble::render

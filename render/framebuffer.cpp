@@ -1,0 +1,82 @@
+#include "render/framebuffer.h"
+
+#include "render/renderer.h" // RenderError
+
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace tumble::render {
+
+Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+    // A renderbuffer is an image the GPU can draw into but not sample; right for buffers we
+    // only read back (a shadow map, which is sampled, will be a texture instead).
+    glGenRenderbuffers(1, &color_);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glGenRenderbuffers(1, &depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        destroy();
+        throw RenderError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+                          " is incomplete (glCheckFramebufferStatus = " + std::to_string(status) +
+                          ")");
+    }
+}
+
+Framebuffer::~Framebuffer() {
+    destroy();
+}
+
+Framebuffer::Framebuffer(Framebuffer&& other) noexcept
+    : fbo_(std::exchange(other.fbo_, 0)), color_(std::exchange(other.color_, 0)),
+      depth_(std::exchange(other.depth_, 0)), width_(std::exchange(other.width_, 0)),
+      height_(std::exchange(other.height_, 0)) {}
+
+Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
+    if (this != &other) {
+        destroy();
+        fbo_ = std::exchange(other.fbo_, 0);
+        color_ = std::exchange(other.color_, 0);
+        depth_ = std::exchange(other.depth_, 0);
+        width_ = std::exchange(other.width_, 0);
+        height_ = std::exchange(other.height_, 0);
+    }
+    return *this;
+}
+
+void Framebuffer::destroy() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (color_) glDeleteRenderbuffers(1, &color_);
+    if (depth_) glDeleteRenderbuffers(1, &depth_);
+    fbo_ = color_ = depth_ = 0;
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
+void Framebuffer::read_rgb(Image& out) const {
+    if (out.width != width_ || out.height != height_) out = Image(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1); // rows of width*3 bytes, no padding to 4
+    glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, out.rgb.data());
+    // Flip in place: swap row y with row height-1-y for the top half.
+    const std::size_t row_bytes = std::size_t(width_) * 3;
+    for (int y = 0; y < height_ / 2; ++y) {
+        std::swap_ranges(out.row(y), out.row(y) + row_bytes, out.row(height_ - 1 - y));
+    }
+}
+
+} // namespace tumble::render

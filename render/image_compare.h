@@ -1,0 +1,47 @@
+#pragma once
+// Compares two decoded images (never file bytes: two PNG encoders give different bytes for the
+// same pixels) and tells how they differ, for golden-image tests and `tumble diff`.
+//
+// A pixel is *changed* when some channel differs by more than `tolerance` and, if a perceptual
+// threshold is set, the colour difference in YIQ space (the NTSC luma/chroma space, weighted for
+// how visible each component is) exceeds it too. A changed pixel is then either
+//   * anti-aliased: it looks like the soft edge of a shape that moved by a pixel or changed its
+//     coverage slightly (it lies between a darker and a brighter neighbour, and one of those sits
+//     inside a flat area in both images), which is what different GPU drivers, Mesa versions or
+//     rounding produce along edges; counted apart, not held against the images; or
+//   * different: everything else. Counted against `max_different`.
+// The idea is that of pixelmatch (Mapbox) and of the paper it follows, Kotsarenko and Ramos,
+// "Measuring perceived color difference using YIQ NTSC transmission color space"; this is an
+// independent implementation of it for 8-bit RGB.
+#include "render/image.h"
+
+#include <cstdint>
+#include <string>
+
+namespace tumble::render {
+
+struct CompareOptions {
+    int tolerance = 0; // per channel, 0..255: differences up to this are no change at all
+    // 0..1, the fraction of the largest possible YIQ difference (black vs white) a change must
+    // exceed to count; 0 = any change beyond `tolerance` counts. pixelmatch's default is 0.1.
+    double perceptual_threshold = 0;
+    std::int64_t max_different = 0;  // the images match when at most this many pixels differ
+    bool detect_antialiasing = true; // false: every changed pixel is "different"
+};
+
+struct CompareResult {
+    bool same_size = false;
+    bool identical = false;    // same size and no changed pixel at all (within tolerance)
+    bool matches = false;      // same size and different <= max_different (AA pixels allowed)
+    int max_channel_delta = 0; // largest |a - b| over all pixels and channels
+    std::int64_t different = 0;
+    std::int64_t antialiased = 0;
+    // Same size as the inputs: a faded grey copy of the first image, with different pixels red
+    // and anti-aliased ones yellow. Empty when the sizes differ.
+    Image diff;
+    std::string summary; // one line for people, e.g. "12 pixels differ (max channel delta 40) ..."
+};
+
+CompareResult compare_images(const Image& a, const Image& b, const CompareOptions& options = {});
+
+} // namespace tumble::render

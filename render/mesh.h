@@ -1,0 +1,56 @@
+#pragma once
+// Procedural meshes for each MeshKind, built once on the CPU (MeshData) and uploaded once to the
+// GPU (GpuMesh). Conventions shared by all meshes:
+//   - indexed triangles, wound counter-clockwise when seen from outside (front faces);
+//   - one normal per vertex: smooth on the sphere (the normal of the true surface at that point),
+//     flat on the box (each face has its own 4 vertices so its corners do not share normals);
+//   - unit size, placed in the world by Instance::transform (see scene_view.h).
+#include "render/scene_view.h"
+
+#include <GL/gl.h>
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace tumble::render {
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+};
+
+struct MeshData {
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices; // three per triangle
+};
+
+// Unit sphere (radius 1) as latitude/longitude bands around the z axis: `segments` around,
+// `rings` from pole to pole. 64 x 32 looks round at 720p.
+MeshData make_sphere(int segments = 64, int rings = 32);
+MeshData make_box();   // [-1,1]^3, 24 vertices (4 per face), flat normals
+MeshData make_plane(); // the square [-1,1]^2 at z = 0, normal +z
+MeshData make_mesh(MeshKind kind);
+
+// A mesh in GPU memory: vertex buffer + index buffer, described by a vertex array object
+// (attribute 0 = position, attribute 1 = normal). Move-only; needs a current GL context.
+class GpuMesh {
+  public:
+    GpuMesh() = default;
+    explicit GpuMesh(const MeshData& data);
+    ~GpuMesh();
+    GpuMesh(GpuMesh&& other) noexcept;
+    GpuMesh& operator=(GpuMesh&& other) noexcept;
+
+    void bind() const; // makes this mesh's vertex array current
+    void draw() const; // draws all triangles; call bind() first
+    GLsizei index_count() const { return index_count_; }
+
+  private:
+    void destroy();
+
+    GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
+    GLsizei index_count_ = 0;
+};
+
+} // namespace tumble::render

@@ -1,0 +1,253 @@
+#include "render/mp4_sink.h"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+#include <libswscale/swscale.h>
+}
+
+#include <algorithm>
+#include <array>
+
+namespace tumble::render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string av_error_text(int code) {
+    char text[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, text, sizeof text);
+    return text;
+}
+
+// Owning pointers for the libav objects, each freed by its own function.
+struct FormatFree {
+    void operator()(AVFormatContext* f) const {
+        if (f->pb) avio_closep(&f->pb);
+        avformat_free_context(f);
+    }
+};
+struct CodecFree {
+    void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
+};
+struct FrameFree {
+    void operator()(AVFrame* f) const { av_frame_free(&f); }
+};
+struct PacketFree {
+    void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+struct ScalerFree {
+    void operator()(SwsContext* s) const { sws_freeContext(s); }
+};
+
+constexpr std::array<const char*, 10> kPresets = {"ultrafast", "superfast", "veryfast", "faster",
+                                                  "fast",      "medium",    "slow",     "slower",
+                                                  "veryslow",  "placebo"};
+
+// Everything that can be checked before touching the disk, so a bad request leaves no trace.
+void check_options(const std::string& output, const SinkOptions& o) {
+    const auto fail = [&](const std::string& why) {
+        throw SinkError("cannot write '" + output + "': " + why);
+    };
+    const std::string size = std::to_string(o.width) + "x" + std::to_string(o.height);
+    if (o.width <= 0 || o.height <= 0) fail("video needs a frame size, got " + size);
+    if (o.width % 2 != 0 || o.height % 2 != 0) {
+        fail("H.264 yuv420p needs even width and height, got " + size +
+             " (chroma is stored at half resolution); use e.g. " +
+             std::to_string(o.width + o.width % 2) + "x" + std::to_string(o.height + o.height % 2));
+    }
+    if (o.fps <= 0) fail("fps must be positive, got " + std::to_string(o.fps));
+    if (o.crf < 0 || o.crf > 51) fail("crf must be 0..51, got " + std::to_string(o.crf));
+    if (o.threads < 0) fail("threads must be >= 0, got " + std::to_string(o.threads));
+    if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) {
+        std::string known;
+        for (const char* p : kPresets) known += std::string(known.empty() ? "" : ", ") + p;
+        fail("unknown x264 preset '" + o.preset + "' (known: " + known + ")");
+    }
+}
+
+} // namespace
+
+struct Mp4Sink::Encoder {
+    std::unique_ptr<AVFormatContext, FormatFree> format;
+    std::unique_ptr<AVCodecContext, CodecFree> codec;
+    std::unique_ptr<SwsContext, ScalerFree> scaler;
+    std::unique_ptr<AVFrame, FrameFree> frame; // the yuv420p picture handed to the encoder
+    std::unique_ptr<AVPacket, PacketFree> packet;
+    AVStream* stream = nullptr; // owned by `format`
+    std::string output;         // for messages
+
+    void check(int code, const char* what) const {
+        if (code < 0) {
+            throw SinkError("cannot write '" + output + "': " + what + ": " + av_error_text(code));
+        }
+    }
+    void open_codec(const SinkOptions& o);
+    void open_container(const fs::path& temp);
+    void open_scaler(const SinkOptions& o);
+    void encode(const AVFrame* frame); // nullptr drains the encoder
+};
+
+void Mp4Sink::Encoder::open_codec(const SinkOptions& o) {
+    const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
+    if (!x264) throw SinkError("cannot write '" + output + "': this FFmpeg has no libx264 encoder");
+    codec.reset(avcodec_alloc_context3(x264));
+    if (!codec) throw SinkError("cannot write '" + output + "': out of memory");
+    AVCodecContext* c = codec.get();
+    c->width = o.width;
+    c->height = o.height;
+    c->pix_fmt = AV_PIX_FMT_YUV420P;
+    c->time_base = AVRational{1, o.fps}; // one tick per frame: pts = frame index
+    c->framerate = AVRational{o.fps, 1};
+    c->sample_aspect_ratio = AVRational{1, 1};
+    // Say how the YUV was made (see open_scaler): the tags go into the H.264 VUI and the MP4.
+    c->color_range = AVCOL_RANGE_MPEG;
+    c->colorspace = AVCOL_SPC_BT709;
+    c->color_primaries = AVCOL_PRI_BT709;
+    c->color_trc = AVCOL_TRC_BT709;
+    c->thread_count = o.threads; // libx264's own default is 0 = per core; see SinkOptions
+    c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER; // MP4 keeps SPS/PPS in the header (avcC)
+    AVDictionary* settings = nullptr;
+    av_dict_set(&settings, "preset", o.preset.c_str(), 0);
+    av_dict_set_int(&settings, "crf", o.crf, 0);
+    // Same algorithms whatever SIMD the CPU has, so the bytes do not depend on the machine.
+    const std::string params =
+        "cpu-independent=1" + (o.x264_params.empty() ? "" : ":" + o.x264_params);
+    av_dict_set(&settings, "x264-params", params.c_str(), 0);
+    const int opened = avcodec_open2(c, x264, &settings);
+    av_dict_free(&settings);
+    const std::string what = "opening libx264 (preset " + o.preset + ", crf " +
+                             std::to_string(o.crf) + ", x264-params " + params + ")";
+    check(opened, what.c_str());
+}
+
+void Mp4Sink::Encoder::open_container(const fs::path& temp) {
+    // "file:" stops libavformat from reading a colon in the name as a protocol ("a:b.mp4"), and
+    // the muxer is named because the temporary name does not end in .mp4.
+    const std::string url = "file:" + temp.string();
+    AVFormatContext* f = nullptr;
+    check(avformat_alloc_output_context2(&f, nullptr, "mp4", url.c_str()), "creating MP4 muxer");
+    format.reset(f);
+    stream = avformat_new_stream(f, nullptr);
+    if (!stream) throw SinkError("cannot write '" + output + "': out of memory");
+    check(avcodec_parameters_from_context(stream->codecpar, codec.get()), "stream parameters");
+    // A wish: the MP4 muxer raises the timescale to at least 10000 by doubling (1/30 becomes
+    // 1/15360, 512 ticks per frame), which keeps every timestamp an exact integer.
+    stream->time_base = codec->time_base;
+    stream->avg_frame_rate = codec->framerate;
+    check(avio_open(&f->pb, url.c_str(), AVIO_FLAG_WRITE), "creating the file");
+    AVDictionary* settings = nullptr;
+    // faststart: at the end, rewrite the file with the index ("moov") first. That second pass
+    // reopens the file by its name, which is why the name is set above.
+    av_dict_set(&settings, "movflags", "+faststart", 0);
+    const int written = avformat_write_header(f, &settings);
+    av_dict_free(&settings);
+    check(written, "writing the MP4 header");
+}
+
+// RGB -> YUV with the BT.709 matrix, from full-range RGB (0..255) to limited-range YUV (Y 16..235,
+// U/V 16..240), matching the tags set in open_codec. SWS_ACCURATE_RND avoids the fast paths'
+// rounding bias. SWS_BITEXACT asks for the same result from every SIMD code path: measured, the
+// output already matched with SIMD switched off, but the flag makes that a promise rather than
+// luck, which the determinism guarantee needs.
+void Mp4Sink::Encoder::open_scaler(const SinkOptions& o) {
+    scaler.reset(sws_getContext(o.width, o.height, AV_PIX_FMT_RGB24, o.width, o.height,
+                                AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT,
+                                nullptr, nullptr, nullptr));
+    if (!scaler) throw SinkError("cannot write '" + output + "': no RGB -> yuv420p converter");
+    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+    constexpr int full_range = 1, limited_range = 0, brightness = 0, unit = 1 << 16;
+    sws_setColorspaceDetails(scaler.get(), bt709, full_range, bt709, limited_range, brightness,
+                             unit, unit);
+    frame.reset(av_frame_alloc());
+    packet.reset(av_packet_alloc());
+    if (!frame || !packet) throw SinkError("cannot write '" + output + "': out of memory");
+    frame->format = AV_PIX_FMT_YUV420P;
+    frame->width = o.width;
+    frame->height = o.height;
+    check(av_frame_get_buffer(frame.get(), 0), "allocating a frame");
+}
+
+void Mp4Sink::Encoder::encode(const AVFrame* picture) {
+    check(avcodec_send_frame(codec.get(), picture), "encoding");
+    for (;;) {
+        const int got = avcodec_receive_packet(codec.get(), packet.get());
+        if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return; // needs more input / drained
+        check(got, "encoding");
+        // Constant frame rate: every frame lasts one tick. Setting it explicitly gives the last
+        // frame its duration too, so the container's duration is exactly frames / fps.
+        if (packet->duration == 0) packet->duration = 1;
+        av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
+        packet->stream_index = stream->index;
+        check(av_interleaved_write_frame(format.get(), packet.get()), "writing a packet");
+    }
+}
+
+Mp4Sink::Mp4Sink(const fs::path& output, const SinkOptions& options)
+    : file_(output), options_(options) {
+    check_options(output.string(), options);
+    try {
+        ensure_writable_directory(output.parent_path());
+    } catch (const FileError& e) {
+        throw SinkError("cannot write '" + output.string() + "': " + e.what());
+    }
+    encoder_ = std::make_unique<Encoder>();
+    encoder_->output = output.string();
+    try {
+        encoder_->open_codec(options);
+        encoder_->open_container(file_.temp_path());
+        encoder_->open_scaler(options);
+    } catch (...) {
+        abort();
+        throw;
+    }
+}
+
+Mp4Sink::~Mp4Sink() {
+    abort();
+}
+
+void Mp4Sink::write(const Image& image) {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_frame(describe(), image, options_.width, options_.height);
+    AVFrame* frame = encoder_->frame.get();
+    // The encoder may still hold the previous picture (lookahead): get a buffer of our own.
+    encoder_->check(av_frame_make_writable(frame), "allocating a frame");
+    const std::uint8_t* source[1] = {image.rgb.data()};
+    const int source_stride[1] = {image.width * 3};
+    sws_scale(encoder_->scaler.get(), source, source_stride, 0, image.height, frame->data,
+              frame->linesize);
+    frame->pts = frames_;
+    encoder_->encode(frame);
+    ++frames_;
+}
+
+void Mp4Sink::finish() {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    try {
+        if (frames_ == 0) throw SinkError("no frames were written to '" + describe() + "'");
+        encoder_->encode(nullptr); // flush the frames x264 still holds (lookahead, B-frames)
+        encoder_->check(av_write_trailer(encoder_->format.get()), "finishing the MP4");
+        encoder_->check(avio_closep(&encoder_->format->pb), "closing the file");
+        encoder_.reset();
+        file_.commit();
+    } catch (const FileError& e) {
+        abort();
+        throw SinkError(e.what());
+    } catch (...) {
+        abort();
+        throw;
+    }
+    done_ = true;
+}
+
+void Mp4Sink::abort() noexcept {
+    if (done_) return;
+    encoder_.reset(); // closes the file before it is deleted
+    file_.discard();
+    done_ = true;
+}
+
+} // namespace tumble::render

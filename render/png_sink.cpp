@@ -1,0 +1,166 @@
+#include "render/png_sink.h"
+
+#include <cctype>
+#include <system_error>
+
+namespace tumble::render {
+
+namespace fs = std::filesystem;
+
+// ---- FramePattern ------------------------------------------------------------------------------
+
+std::string FramePattern::name(std::int64_t frame) const {
+    std::string number = std::to_string(frame);
+    if (static_cast<int>(number.size()) < width) {
+        number.insert(0, static_cast<std::size_t>(width) - number.size(), zero_pad ? '0' : ' ');
+    }
+    return prefix + number + suffix;
+}
+
+std::optional<FramePattern> FramePattern::parse(const std::string& text) {
+    const auto fail = [&](const std::string& why) -> SinkError {
+        return SinkError("bad output pattern '" + text + "': " + why);
+    };
+    FramePattern pattern;
+    pattern.text = text;
+    bool found = false;
+    std::string* out = &pattern.prefix; // text before the conversion, then after it
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '%') {
+            *out += text[i];
+            continue;
+        }
+        if (i + 1 < text.size() && text[i + 1] == '%') { // "%%" is a literal '%'
+            *out += '%';
+            ++i;
+            continue;
+        }
+        // A conversion: '%', an optional '0', up to two width digits, 'd'.
+        std::size_t j = i + 1;
+        const bool zero_pad = j < text.size() && text[j] == '0';
+        if (zero_pad) ++j;
+        int width = 0;
+        for (int digits = 0; j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]));
+             ++j, ++digits) {
+            if (digits == 2) throw fail("the frame number width must be at most 99");
+            width = width * 10 + (text[j] - '0');
+        }
+        if (j >= text.size() || text[j] != 'd') {
+            throw fail("'%' must start an integer conversion such as %d or %06d (%% for a '%')");
+        }
+        if (found) throw fail("it has more than one frame number (%d)");
+        if (text.find('/', j) != std::string::npos) {
+            throw fail("the frame number must be in the file name, not in a directory");
+        }
+        found = true;
+        pattern.zero_pad = zero_pad;
+        pattern.width = width;
+        out = &pattern.suffix;
+        i = j;
+    }
+    if (!found) return std::nullopt;
+    return pattern;
+}
+
+FramePattern FramePattern::in_directory(const fs::path& dir) {
+    FramePattern pattern;
+    pattern.prefix = (dir / "").string(); // "frames" and "frames/" both give "frames/"
+    pattern.suffix = ".png";
+    pattern.width = 6;
+    pattern.zero_pad = true;
+    pattern.text = pattern.prefix + "%06d.png";
+    return pattern;
+}
+
+// ---- PngSequenceSink ---------------------------------------------------------------------------
+
+PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& options)
+    : pattern_(std::move(pattern)), options_(options) {
+    const fs::path dir = fs::path(pattern_.name(0)).parent_path();
+    try {
+        if (ensure_writable_directory(dir)) created_directory_ = dir;
+    } catch (const FileError& e) {
+        throw SinkError("cannot write '" + pattern_.text + "': " + e.what());
+    }
+}
+
+void PngSequenceSink::write(const Image& image) {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_frame(describe(), image, options_.width, options_.height);
+    options_.width = image.width; // later frames must have the size of the first
+    options_.height = image.height;
+    try {
+        write_png(pattern_.name(frames_), image, options_.png);
+    } catch (const PngError& e) {
+        throw SinkError(e.what());
+    }
+    ++frames_;
+}
+
+void PngSequenceSink::finish() {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    if (frames_ == 0) {
+        abort();
+        throw SinkError("no frames were written to '" + describe() + "'");
+    }
+    done_ = true; // every frame is already complete on disk
+}
+
+void PngSequenceSink::abort() noexcept {
+    if (done_) return;
+    std::error_code ignored;
+    for (std::int64_t k = 0; k < frames_; ++k) fs::remove(pattern_.name(k), ignored);
+    if (!created_directory_.empty()) fs::remove(created_directory_, ignored); // only if empty
+    done_ = true;
+}
+
+// ---- PngStillSink ------------------------------------------------------------------------------
+
+PngStillSink::PngStillSink(const fs::path& path, const SinkOptions& options)
+    : file_(path), options_(options) {
+    try {
+        ensure_writable_directory(path.parent_path());
+    } catch (const FileError& e) {
+        throw SinkError("cannot write '" + path.string() + "': " + e.what());
+    }
+}
+
+void PngStillSink::write(const Image& image) {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    if (frames_ > 0) {
+        throw SinkError("'" + describe() +
+                        "' is a single still and already has its frame; for a sequence use a "
+                        "directory (frames/) or a pattern (frames/%06d.png)");
+    }
+    detail::check_frame(describe(), image, options_.width, options_.height);
+    try {
+        // write_png is itself atomic, so the temporary file is never seen half-written either.
+        write_png(file_.temp_path(), image, options_.png);
+    } catch (const PngError& e) {
+        throw SinkError(e.what());
+    }
+    ++frames_;
+}
+
+void PngStillSink::finish() {
+    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    try {
+        if (frames_ == 0) throw SinkError("no frame was written to '" + describe() + "'");
+        file_.commit();
+    } catch (const FileError& e) {
+        abort();
+        throw SinkError(e.what());
+    } catch (...) {
+        abort();
+        throw;
+    }
+    done_ = true;
+}
+
+void PngStillSink::abort() noexcept {
+    if (done_) return;
+    file_.discard();
+    done_ = true;
+}
+
+} // namespace tumble::render

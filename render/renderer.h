@@ -1,0 +1,47 @@
+#pragma once
+// Headless renderer: an OSMesa (llvmpipe) OpenGL 3.3+ core context that draws a SceneView into
+// an Image. No window, no display, no global state: everything lives in the Renderer object.
+#include "render/image.h"
+#include "render/scene_view.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace tumble::render {
+
+struct RenderError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct RenderOptions {
+    int width = 1280;
+    int height = 720;
+};
+
+// Threading: GL contexts are current per thread. draw() makes this renderer's context current on
+// the calling thread, so several renderers can share a thread; use each from one thread at a time.
+// The shaders live in assets/shaders (embedded); the passes of a frame are listed in renderer.cpp.
+class Renderer {
+  public:
+    // Creates the context and uploads shaders and meshes. Throws RenderError with a clear
+    // message when OSMesa cannot give a 3.3 core context.
+    explicit Renderer(const RenderOptions& options);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Draws one frame and reads it back into `out` (resized as needed), rows top-down. Pass the
+    // same Image every frame and nothing is allocated. Same SceneView in, same pixels out.
+    void draw(const SceneView& view, Image& out);
+
+    const RenderOptions& options() const;
+    std::string gl_renderer() const; // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string gl_version() const;  // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace tumble::render

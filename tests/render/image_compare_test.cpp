@@ -1,0 +1,168 @@
+// Image comparison: tolerance, exact counting, anti-aliasing detection, the diff picture.
+#include "render/image_compare.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace tumble::render {
+namespace {
+
+Image filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image image(width, height);
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+        image.rgb[i] = r, image.rgb[i + 1] = g, image.rgb[i + 2] = b;
+    }
+    return image;
+}
+
+void set(Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    std::uint8_t* p = image.row(y) + 3 * x;
+    p[0] = r, p[1] = g, p[2] = b;
+}
+
+bool is(const Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    const std::uint8_t* p = image.row(y) + 3 * x;
+    return p[0] == r && p[1] == g && p[2] == b;
+}
+
+TEST(ImageCompare, IdenticalImagesAreIdentical) {
+    const Image a = test::rendered_like(120, 80);
+    const CompareResult r = compare_images(a, a);
+    EXPECT_TRUE(r.same_size);
+    EXPECT_TRUE(r.identical);
+    EXPECT_TRUE(r.matches);
+    EXPECT_EQ(r.max_channel_delta, 0);
+    EXPECT_EQ(r.different, 0);
+    EXPECT_EQ(r.antialiased, 0);
+    EXPECT_EQ(r.diff.width, 120);
+    EXPECT_EQ(r.diff.height, 80);
+}
+
+TEST(ImageCompare, SmallChangeWithinTolerancePasses) {
+    const Image a = test::rendered_like(60, 40);
+    Image b = a;
+    b.row(20)[3 * 30 + 1] += 1; // one level in one channel of one pixel
+    CompareOptions strict;
+    const CompareResult exact = compare_images(a, b, strict);
+    EXPECT_FALSE(exact.identical);
+    EXPECT_EQ(exact.different, 1);
+    EXPECT_FALSE(exact.matches);
+
+    CompareOptions lenient;
+    lenient.tolerance = 2;
+    const CompareResult r = compare_images(a, b, lenient);
+    EXPECT_TRUE(r.identical);
+    EXPECT_TRUE(r.matches);
+    EXPECT_EQ(r.max_channel_delta, 1); // still reported, for people tuning tolerances
+}
+
+TEST(ImageCompare, BlobOfChangesIsCountedExactlyAndShownRed) {
+    const Image a = filled(50, 40, 200, 200, 200);
+    Image b = a;
+    for (int y = 10; y < 15; ++y) {
+        for (int x = 20; x < 27; ++x) set(b, x, y, 20, 90, 200); // 7 x 5 = 35 pixels
+    }
+    CompareOptions options;
+    options.max_different = 34;
+    const CompareResult r = compare_images(a, b, options);
+    EXPECT_EQ(r.different, 35);
+    EXPECT_EQ(r.antialiased, 0);
+    EXPECT_EQ(r.max_channel_delta, 180);
+    EXPECT_FALSE(r.matches); // 35 > 34
+    options.max_different = 35;
+    EXPECT_TRUE(compare_images(a, b, options).matches);
+
+    EXPECT_TRUE(is(r.diff, 20, 10, 255, 0, 0));
+    EXPECT_TRUE(is(r.diff, 26, 14, 255, 0, 0));
+    EXPECT_FALSE(is(r.diff, 19, 10, 255, 0, 0));
+    const std::uint8_t* faded = r.diff.row(0);
+    EXPECT_TRUE(faded[0] == faded[1] && faded[1] == faded[2]) << "unchanged pixels are grey";
+    EXPECT_GT(faded[0], 200) << "and faded towards white";
+}
+
+// A vertical black | white edge with one grey anti-aliasing column, moved right by one pixel:
+// what two rasterisers that round the edge differently produce.
+TEST(ImageCompare, OnePixelShiftOfAnAntialiasedEdgeIsAntialiasing) {
+    const auto edge_at = [](int column) {
+        Image image = filled(20, 12, 255, 255, 255);
+        for (int y = 0; y < 12; ++y) {
+            for (int x = 0; x < column; ++x) set(image, x, y, 0, 0, 0);
+            set(image, column, y, 128, 128, 128);
+        }
+        return image;
+    };
+    const CompareResult r = compare_images(edge_at(8), edge_at(9));
+    EXPECT_EQ(r.different, 0);
+    EXPECT_EQ(r.antialiased, 2 * 12); // columns 8 and 9, every row
+    EXPECT_TRUE(r.matches);
+    EXPECT_FALSE(r.identical);
+    EXPECT_TRUE(is(r.diff, 8, 5, 255, 255, 0)); // yellow
+
+    CompareOptions no_aa;
+    no_aa.detect_antialiasing = false;
+    EXPECT_EQ(compare_images(edge_at(8), edge_at(9), no_aa).different, 2 * 12);
+}
+
+// The same for curved edges: a red disk with 16x-supersampled rim on a light background.
+Image disk_at(double cx) {
+    Image image(80, 60);
+    for (int y = 0; y < 60; ++y) {
+        for (int x = 0; x < 80; ++x) {
+            const double cover = test::disk_coverage(x, y, cx, 30.2, 20);
+            const auto mix = [&](double inside) {
+                return test::to_byte(230 + (inside - 230) * cover);
+            };
+            set(image, x, y, mix(200), mix(40), mix(40));
+        }
+    }
+    return image;
+}
+
+TEST(ImageCompare, MovedRoundEdgesAreAntialiasing) {
+    // Half a pixel: every changed pixel is on the rim, and all are recognised.
+    const CompareResult half = compare_images(disk_at(40.3), disk_at(40.8));
+    EXPECT_EQ(half.different, 0);
+    EXPECT_GT(half.antialiased, 100);
+    // A whole pixel: where the rim was nearly vertical and pixel-aligned, a pixel can flip from
+    // background to fully inside with no soft pixel in either image, a real (if tiny) difference.
+    const CompareResult whole = compare_images(disk_at(40.3), disk_at(41.3));
+    EXPECT_GT(whole.antialiased, 100);
+    EXPECT_LT(whole.different * 20, whole.antialiased);
+}
+
+TEST(ImageCompare, IsolatedChangeIsNotAntialiasing) {
+    // One dark pixel in a flat light area has no brighter neighbour: it is a real difference.
+    const Image a = filled(9, 9, 230, 230, 230);
+    Image b = a;
+    set(b, 4, 4, 40, 40, 40);
+    const CompareResult r = compare_images(a, b);
+    EXPECT_EQ(r.different, 1);
+    EXPECT_EQ(r.antialiased, 0);
+}
+
+TEST(ImageCompare, PerceptualThresholdIgnoresFaintChanges) {
+    const Image a = filled(10, 10, 100, 100, 100);
+    Image b = a;
+    set(b, 5, 5, 104, 100, 100); // faint
+    set(b, 2, 2, 255, 0, 0);     // obvious
+    CompareOptions options;
+    options.perceptual_threshold = 0.1;
+    const CompareResult r = compare_images(a, b, options);
+    EXPECT_EQ(r.different, 1);
+    EXPECT_TRUE(is(r.diff, 2, 2, 255, 0, 0));
+    EXPECT_FALSE(is(r.diff, 5, 5, 255, 0, 0));
+}
+
+TEST(ImageCompare, SizeMismatchIsReportedNotFatal) {
+    const CompareResult r = compare_images(Image(10, 8), Image(10, 9));
+    EXPECT_FALSE(r.same_size);
+    EXPECT_FALSE(r.identical);
+    EXPECT_FALSE(r.matches);
+    EXPECT_EQ(r.diff.width, 0);
+    EXPECT_NE(r.summary.find("10x8"), std::string::npos) << r.summary;
+    EXPECT_NE(r.summary.find("10x9"), std::string::npos) << r.summary;
+}
+
+} // namespace
+} // namespace tumble::render

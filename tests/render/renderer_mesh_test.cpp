@@ -1,0 +1,60 @@
+// The procedural meshes are what Instance::transform expects: unit size, outward normals,
+// triangles wound counter-clockwise seen from outside.
+#include "render/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tumble::render {
+namespace {
+
+// Every triangle's geometric normal (b - a) x (c - a) points the same way as its vertex normals.
+void expect_outward_ccw(const MeshData& m) {
+    ASSERT_EQ(m.indices.size() % 3, 0u);
+    for (std::size_t i = 0; i < m.indices.size(); i += 3) {
+        for (int k = 0; k < 3; ++k) ASSERT_LT(m.indices[i + k], m.vertices.size());
+        const Vertex& a = m.vertices[m.indices[i]];
+        const Vertex& b = m.vertices[m.indices[i + 1]];
+        const Vertex& c = m.vertices[m.indices[i + 2]];
+        const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
+        ASSERT_GT(glm::length(face), 0.0f) << "degenerate triangle " << i / 3;
+        EXPECT_GT(glm::dot(face, a.normal + b.normal + c.normal), 0.0f) << "triangle " << i / 3;
+    }
+}
+
+TEST(RendererMesh, SphereIsUnitWithSmoothNormals) {
+    const MeshData m = make_sphere(16, 8);
+    EXPECT_EQ(m.vertices.size(), 2u + 16u * 7u);
+    EXPECT_EQ(m.indices.size(), 3u * 2u * 16u * 7u);
+    for (const Vertex& v : m.vertices) {
+        EXPECT_NEAR(glm::length(v.position), 1.0f, 1e-5f);
+        EXPECT_NEAR(glm::length(v.normal - v.position), 0.0f, 1e-5f);
+    }
+    expect_outward_ccw(m);
+}
+
+TEST(RendererMesh, BoxSpansMinusOneToOneWithFlatNormals) {
+    const MeshData m = make_box();
+    EXPECT_EQ(m.vertices.size(), 24u);
+    EXPECT_EQ(m.indices.size(), 36u);
+    for (const Vertex& v : m.vertices) {
+        for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(std::abs(v.position[k]), 1.0f);
+        EXPECT_FLOAT_EQ(glm::length(v.normal), 1.0f);
+        EXPECT_FLOAT_EQ(glm::dot(v.normal, v.position), 1.0f); // on the face the normal names
+    }
+    expect_outward_ccw(m);
+}
+
+TEST(RendererMesh, PlaneIsUnitSquareFacingUp) {
+    const MeshData m = make_plane();
+    for (const Vertex& v : m.vertices) {
+        EXPECT_EQ(v.position.z, 0.0f);
+        EXPECT_EQ(std::abs(v.position.x), 1.0f);
+        EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+    }
+    expect_outward_ccw(m);
+}
+
+} // namespace
+} // namespace tumble::render
