@@ -1,0 +1,79 @@
+// The MP4 a user gets: frame count, frame rate, duration and pixel format as written in the
+// container (read back with ffprobe, as a user would check), and Ctrl-C finishing a video that
+// still plays.
+#include "app/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <thread>
+#include <unistd.h>
+
+namespace tumble::test {
+namespace {
+
+// key=value lines of `ffprobe -count_frames` for the first video stream.
+std::map<std::string, std::string> probe(const std::filesystem::path& file) {
+    const auto out = file.parent_path() / "probe.txt";
+    const std::string cmd = "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+                            "stream=codec_name,pix_fmt,width,height,r_frame_rate,avg_frame_rate,"
+                            "nb_read_frames:format=duration -of default=noprint_wrappers=1 '" +
+                            file.string() + "' > '" + out.string() + "' 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << read_text(out);
+    std::map<std::string, std::string> kv;
+    std::istringstream in(read_text(out));
+    std::string line;
+    while (std::getline(in, line))
+        if (auto eq = line.find('='); eq != std::string::npos) kv[line.substr(0, eq)] = line.substr(eq + 1);
+    std::filesystem::remove(out);
+    return kv;
+}
+
+TEST(Video, ContainerHasExactFrameCountRateDurationAndPixelFormat) {
+    const auto dir = scratch_dir();
+    const CliResult r = run_tumble(dir, "render --duration 1.5 --width 160 --height 90 --fps 30 -o v/out.mp4");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote v/out.mp4"), std::string::npos) << r.err;
+    EXPECT_EQ(files_in(dir), std::vector<std::string>{"v/out.mp4"}); // no temporary left behind
+    auto kv = probe(dir / "v/out.mp4");
+    EXPECT_EQ(kv["codec_name"], "h264");
+    EXPECT_EQ(kv["pix_fmt"], "yuv420p");
+    EXPECT_EQ(kv["width"], "160");
+    EXPECT_EQ(kv["height"], "90");
+    EXPECT_EQ(kv["r_frame_rate"], "30/1");
+    EXPECT_EQ(kv["avg_frame_rate"], "30/1");
+    EXPECT_EQ(kv["nb_read_frames"], "45");
+    EXPECT_NEAR(std::stod(kv["duration"]), 1.5, 1e-6);
+}
+
+TEST(Video, InterruptFinishesAPlayableVideoAndSaysSo) {
+    const auto dir = scratch_dir();
+    const std::string cmd = std::string(TUMBLE_EXE) + " render --duration 600 --width 320 --height 180 -o long.mp4";
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        if (chdir(dir.c_str()) != 0) _exit(99);
+        freopen("stderr.txt", "w", stderr);
+        execl("/bin/sh", "sh", "-c", ("exec " + cmd).c_str(), static_cast<char*>(nullptr));
+        _exit(98);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000)); // some hundreds of frames
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    const std::string err = read_text(dir / "stderr.txt");
+    EXPECT_NE(err.find("interrupted"), std::string::npos) << err;
+    ASSERT_TRUE(std::filesystem::exists(dir / "long.mp4")) << err;
+    auto kv = probe(dir / "long.mp4");
+    const int frames = std::stoi(kv["nb_read_frames"]);
+    EXPECT_GT(frames, 0);
+    EXPECT_NE(err.find("after " + std::to_string(frames) + " frames"), std::string::npos) << err;
+    EXPECT_NEAR(std::stod(kv["duration"]), frames / 60.0, 1e-3); // format duration is in ms
+}
+
+} // namespace
+} // namespace tumble::test
