@@ -2,6 +2,8 @@
 // The `tumble` subcommands. Each returns the process exit code:
 //   0 success, 1 run-time failure (divergence, I/O), 2 bad input (scene, options, output name),
 //   128 + signal when interrupted (the outputs are finished first, so a video still plays).
+#include "render/image_compare.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,7 +36,22 @@ struct SimulateCommand {
     int every = 1;      // write every N-th step
 };
 
+struct GoldensCommand {
+    std::string action; // "check" or "update"
+    std::string manifest;
+    std::string artifacts = "golden-artifacts"; // where check writes actual and diff images
+    bool force = false;
+};
+
+struct DiffCommand {
+    std::string a, b;
+    std::string output; // diff image, optional
+    render::CompareOptions options;
+};
+
 int run_render(const RenderCommand& cmd);
+int run_goldens(const GoldensCommand& cmd);
+int run_diff(const DiffCommand& cmd);
 int run_simulate(const SimulateCommand& cmd);
 int run_explain(const SceneOptions& opts);
 int run_list_scenes();

@@ -58,6 +58,36 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("scenes", "list the built-in scenes");
 
+    GoldensCommand goldens;
+    CLI::App* g =
+        app.add_subcommand("goldens", "check or update golden images listed in a manifest");
+    g->add_option("action", goldens.action, "check | update")
+        ->required()
+        ->check(CLI::IsMember({"check", "update"}));
+    g->add_option("manifest", goldens.manifest,
+                  "golden manifest JSON (e.g. tests/goldens/goldens.json)")
+        ->required();
+    g->add_option("--artifacts", goldens.artifacts,
+                  "folder for actual and diff images of failures");
+    g->add_flag("--force", goldens.force,
+                "update even when the goldens were made by another GL renderer");
+
+    DiffCommand diff;
+    CLI::App* d = app.add_subcommand(
+        "diff", "compare two PNG images by decoded pixels (exit 0 match, 1 differ)");
+    d->add_option("a", diff.a, "first image")->required();
+    d->add_option("b", diff.b, "second image")->required();
+    d->add_option("-o,--output", diff.output,
+                  "write a diff image (red: different, yellow: anti-aliasing)");
+    d->add_option("--tolerance", diff.options.tolerance, "per-channel difference ignored (0..255)")
+        ->check(CLI::Range(0, 255));
+    d->add_option("--threshold", diff.options.perceptual_threshold,
+                  "YIQ perceptual threshold (0..1)")
+        ->check(CLI::Range(0.0, 1.0));
+    d->add_option("--max-different", diff.options.max_different, "pixels allowed to differ");
+    d->add_flag("!--no-aa", diff.options.detect_antialiasing,
+                "count anti-aliased pixels as different");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& h) {
@@ -72,6 +102,8 @@ int main(int argc, char** argv) {
     if (s->parsed()) return run_simulate(simulate);
     if (e->parsed()) return run_explain(explain);
     if (app.got_subcommand("scenes")) return run_list_scenes();
+    if (g->parsed()) return run_goldens(goldens);
+    if (d->parsed()) return run_diff(diff);
     std::fputs(app.help().c_str(), stdout);
     return kOk;
 }

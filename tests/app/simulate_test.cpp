@@ -27,7 +27,8 @@ TEST(Simulate, WritesStatesAndDiagnosticsAtTheRequestedSteps) {
     const auto dir = scratch_dir();
     const CliResult r = run_tumble(dir, "simulate --duration 0.5 --every 6 -o run/states.csv");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(files_in(dir), (std::vector<std::string>{"run/states.csv", "run/states.diagnostics.csv"}));
+    EXPECT_EQ(files_in(dir),
+              (std::vector<std::string>{"run/states.csv", "run/states.diagnostics.csv"}));
     const auto states = read_csv(dir / "run/states.csv");
     const auto diags = read_csv(dir / "run/states.diagnostics.csv");
     // 0.5 s at 60 fps = 30 frames, 29 intervals of 4 steps = 116 steps; rows at 0, 6, .., 114, 116.
@@ -56,7 +57,8 @@ TEST(Simulate, DefaultSceneMatchesCommittedReference) {
     const auto dir = scratch_dir();
     ASSERT_EQ(run_tumble(dir, "simulate --duration 1 --every 24 -o states.csv").exit_code, 0);
     const auto got = read_csv(dir / "states.csv");
-    const auto want = read_csv(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests/data/default_states.csv");
+    const auto want =
+        read_csv(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests/data/default_states.csv");
     ASSERT_EQ(got.size(), want.size());
     double worst = 0.0;
     for (std::size_t r = 0; r < got.size(); ++r) {

@@ -26,14 +26,16 @@ std::map<std::string, std::string> probe(const std::filesystem::path& file) {
     std::istringstream in(read_text(out));
     std::string line;
     while (std::getline(in, line))
-        if (auto eq = line.find('='); eq != std::string::npos) kv[line.substr(0, eq)] = line.substr(eq + 1);
+        if (auto eq = line.find('='); eq != std::string::npos)
+            kv[line.substr(0, eq)] = line.substr(eq + 1);
     std::filesystem::remove(out);
     return kv;
 }
 
 TEST(Video, ContainerHasExactFrameCountRateDurationAndPixelFormat) {
     const auto dir = scratch_dir();
-    const CliResult r = run_tumble(dir, "render --duration 1.5 --width 160 --height 90 --fps 30 -o v/out.mp4");
+    const CliResult r =
+        run_tumble(dir, "render --duration 1.5 --width 160 --height 90 --fps 30 -o v/out.mp4");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("wrote v/out.mp4"), std::string::npos) << r.err;
     EXPECT_EQ(files_in(dir), std::vector<std::string>{"v/out.mp4"}); // no temporary left behind
@@ -50,7 +52,8 @@ TEST(Video, ContainerHasExactFrameCountRateDurationAndPixelFormat) {
 
 TEST(Video, InterruptFinishesAPlayableVideoAndSaysSo) {
     const auto dir = scratch_dir();
-    const std::string cmd = std::string(TUMBLE_EXE) + " render --duration 600 --width 320 --height 180 -o long.mp4";
+    const std::string cmd =
+        std::string(TUMBLE_EXE) + " render --duration 600 --width 320 --height 180 -o long.mp4";
     const pid_t pid = fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) {

@@ -1,0 +1,87 @@
+#include "app/goldens.h"
+
+#include "app/json_reader.h"
+#include "render/atomic_file.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace tumble::app {
+namespace {
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) throw SceneError(p.string(), "file", "cannot open the golden manifest");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+render::CompareOptions read_compare(JsonReader r, render::CompareOptions c) {
+    if (auto t = r.optional("tolerance"))
+        c.tolerance = t->integer(0, 255, "a per-channel tolerance");
+    if (auto p = r.optional("perceptual_threshold")) {
+        c.perceptual_threshold = p->non_negative("a YIQ threshold in [0, 1]");
+        if (c.perceptual_threshold > 1.0) p->fail("expected a YIQ threshold in [0, 1]");
+    }
+    if (auto m = r.optional("max_different"))
+        c.max_different = m->integer(0, 1 << 30, "a maximum count of differing pixels");
+    if (auto a = r.optional("detect_antialiasing")) c.detect_antialiasing = a->boolean();
+    r.finish();
+    return c;
+}
+
+std::string image_name(const std::string& scene, std::int64_t frame) {
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%04lld", static_cast<long long>(frame));
+    return std::filesystem::path(scene).stem().string() + "_" + digits + ".png";
+}
+
+} // namespace
+
+std::string GoldenEntry::label() const {
+    return scene + " frame " + std::to_string(frame);
+}
+
+GoldenManifest load_golden_manifest(const std::filesystem::path& path) {
+    const std::string text = read_file(path);
+    const nlohmann::json root = parse_json(text, path.string());
+    JsonReader r(root, path.string(), "");
+    GoldenManifest m;
+    m.path = path;
+    m.gl_renderer = r.field("gl_renderer").string();
+    m.gl_version = r.field("gl_version").string();
+    render::CompareOptions defaults;
+    if (auto c = r.optional("compare")) defaults = read_compare(*c, defaults);
+    JsonReader images = r.field("images");
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        JsonReader e = images.at(i);
+        GoldenEntry g;
+        g.scene = e.field("scene").string();
+        g.frame = e.field("frame").integer(0, 1 << 30, "a frame index");
+        if (auto w = e.optional("width")) g.width = w->integer(16, 7680, "an image width");
+        if (auto h = e.optional("height")) g.height = h->integer(16, 4320, "an image height");
+        g.compare = defaults;
+        if (auto c = e.optional("compare")) g.compare = read_compare(*c, defaults);
+        g.image = path.parent_path() / image_name(g.scene, g.frame);
+        e.finish();
+        m.entries.push_back(g);
+    }
+    r.finish();
+    return m;
+}
+
+void save_golden_manifest(const GoldenManifest& m) {
+    nlohmann::json root = parse_json(read_file(m.path), m.path.string());
+    root["gl_renderer"] = m.gl_renderer;
+    root["gl_version"] = m.gl_version;
+    render::AtomicFile file(m.path);
+    std::ofstream out(file.temp_path(), std::ios::binary);
+    out << root.dump(2) << "\n";
+    out.close();
+    if (!out) throw SceneError(m.path.string(), "file", "cannot write the manifest");
+    file.commit();
+}
+
+} // namespace tumble::app

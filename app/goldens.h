@@ -1,0 +1,37 @@
+#pragma once
+// Golden images: committed pictures of chosen frames, and the manifest that says how each is made
+// and how closely a new rendering must match it. A manifest (JSON) looks like
+//   {"gl_renderer": "...", "gl_version": "...",
+//    "compare": {"tolerance": 2, "perceptual_threshold": 0.05, "max_different": 20},
+//    "images": [{"scene": "default", "frame": 0, "width": 320, "height": 180}, ...]}
+// Each image lives beside the manifest as <scene>_<frame, 4 digits>.png. An entry may carry its
+// own "compare" object, overriding the defaults field by field.
+#include "render/image_compare.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tumble::app {
+
+struct GoldenEntry {
+    std::string scene; // built-in name, or a path relative to the manifest's folder
+    std::int64_t frame = 0;
+    int width = 320;
+    int height = 180;
+    render::CompareOptions compare;
+    std::filesystem::path image; // the golden PNG
+    std::string label() const;   // "<scene> frame <k>"
+};
+
+struct GoldenManifest {
+    std::filesystem::path path;
+    std::string gl_renderer, gl_version; // of the machine the goldens were made on
+    std::vector<GoldenEntry> entries;
+};
+
+GoldenManifest load_golden_manifest(const std::filesystem::path& path); // throws SceneError
+void save_golden_manifest(const GoldenManifest& manifest); // rewrites renderer fields atomically
+
+} // namespace tumble::app

@@ -1,0 +1,108 @@
+// `tumble goldens check|update MANIFEST`: visual regression against committed golden images.
+//   check   renders every listed frame, compares decoded pixels (exact first, then the
+//           anti-aliasing-aware count against the budget), writes <name>.actual.png and
+//           <name>.diff.png into the artifacts folder for each failure and prints their paths.
+//           Exit 0 all match, 1 some differ, 3 some differ *and* the goldens were made by a
+//           different GL renderer/version (a renderer mismatch, not necessarily a bug).
+//   update  re-renders and rewrites the goldens on purpose; refuses when this machine's renderer
+//           differs from the one recorded in the manifest unless --force.
+#include "app/commands.h"
+#include "app/goldens.h"
+#include "app/scene.h"
+#include "app/scene_error.h"
+#include "app/scene_options.h"
+#include "app/still.h"
+#include "render/png_io.h"
+#include "render/renderer.h"
+
+#include <cstdio>
+#include <map>
+#include <memory>
+
+namespace tumble::app {
+namespace {
+
+// One renderer per image size, created on first use.
+class RendererCache {
+  public:
+    render::Renderer& get(int w, int h) {
+        auto& r = cache_[{w, h}];
+        if (!r) r = std::make_unique<render::Renderer>(render::RenderOptions{w, h});
+        return *r;
+    }
+    render::Renderer& any() { return get(16, 16); }
+
+  private:
+    std::map<std::pair<int, int>, std::unique_ptr<render::Renderer>> cache_;
+};
+
+render::Image render_entry(const GoldenManifest& m, const GoldenEntry& g, RendererCache& cache) {
+    const auto local = m.path.parent_path() / g.scene;
+    Scene scene = load_scene_argument(std::filesystem::exists(local) ? local.string() : g.scene);
+    return render_still(scene, g.frame, cache.get(g.width, g.height));
+}
+
+int check(const GoldenManifest& m, const std::filesystem::path& artifacts, RendererCache& cache) {
+    const std::string renderer = cache.any().gl_renderer(), version = cache.any().gl_version();
+    const bool mismatch = renderer != m.gl_renderer || version != m.gl_version;
+    if (mismatch)
+        std::printf(
+            "note: goldens were made with \"%s\" / \"%s\"; this machine has \"%s\" / \"%s\". "
+            "Differences may come from the renderer, not from Tumble.\n",
+            m.gl_renderer.c_str(), m.gl_version.c_str(), renderer.c_str(), version.c_str());
+    int failures = 0;
+    for (const GoldenEntry& g : m.entries) {
+        const render::Image actual = render_entry(m, g, cache);
+        const render::Image golden = render::read_png(g.image);
+        const render::CompareResult r = render::compare_images(actual, golden, g.compare);
+        std::printf("%-6s %s: %s\n", r.matches ? "ok" : "FAIL", g.label().c_str(),
+                    r.summary.c_str());
+        if (r.matches) continue;
+        ++failures;
+        std::filesystem::create_directories(artifacts);
+        const std::string stem = g.image.stem().string();
+        render::write_png(artifacts / (stem + ".actual.png"), actual);
+        if (r.same_size) render::write_png(artifacts / (stem + ".diff.png"), r.diff);
+        std::printf("       golden: %s\n       actual: %s\n", g.image.c_str(),
+                    (artifacts / (stem + ".actual.png")).c_str());
+        if (r.same_size)
+            std::printf("       diff:   %s\n", (artifacts / (stem + ".diff.png")).c_str());
+    }
+    std::printf("%zu golden image(s), %d failed\n", m.entries.size(), failures);
+    return failures == 0 ? kOk : mismatch ? 3 : kRunFailed;
+}
+
+int update(GoldenManifest m, bool force, RendererCache& cache) {
+    const std::string renderer = cache.any().gl_renderer(), version = cache.any().gl_version();
+    if ((renderer != m.gl_renderer || version != m.gl_version) && !force && !m.gl_renderer.empty())
+        return report_error("refusing to update goldens made with \"" + m.gl_renderer + "\" / \"" +
+                                m.gl_version + "\" from \"" + renderer + "\" / \"" + version +
+                                "\"; pass --force to replace them anyway",
+                            kBadInput);
+    for (const GoldenEntry& g : m.entries) {
+        // Goldens are committed: smallest file (level 9) rather than fastest.
+        render::write_png(g.image, render_entry(m, g, cache), {render::PngEncoder::libpng, 9});
+        std::printf("wrote %s (%s)\n", g.image.c_str(), g.label().c_str());
+    }
+    m.gl_renderer = renderer;
+    m.gl_version = version;
+    save_golden_manifest(m);
+    return kOk;
+}
+
+} // namespace
+
+int run_goldens(const GoldensCommand& cmd) {
+    try {
+        const GoldenManifest m = load_golden_manifest(cmd.manifest);
+        RendererCache cache;
+        if (cmd.action == "update") return update(m, cmd.force, cache);
+        return check(m, cmd.artifacts, cache);
+    } catch (const SceneError& e) {
+        return report_error(e.what(), kBadInput);
+    } catch (const std::exception& e) {
+        return report_error(e.what(), kRunFailed);
+    }
+}
+
+} // namespace tumble::app

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Re-renders the committed golden images on purpose (after a deliberate change to a scene or to
+# the renderer). Refuses when this machine's GL renderer differs from the one that made them;
+# pass --force to replace them anyway. Review the images before committing them.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh release
+build/release/app/tumble goldens update tests/goldens/goldens.json "$@"
