@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Tumble needs (only those missing), then configures and builds
 # one CMake preset. Idempotent: a second run installs nothing and rebuilds nothing that is current.
-#   scripts/setup.sh [preset]      preset: release (default), debug, asan
+#   scripts/setup.sh [preset [target]]   preset: release (default), debug, asan; target: all
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
+target="${2:-all}"
 
 # Exact package list: build tools, libraries, test and benchmark frameworks, and ffprobe for tests.
 packages=(
@@ -32,4 +33,4 @@ fi
 if [ ! -f "build/$preset/build.ninja" ]; then
   cmake --preset "$preset" >&2
 fi
-cmake --build --preset "$preset" >&2
+cmake --build --preset "$preset" --target "$target" >&2
