@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace tumble::render {
@@ -81,6 +83,48 @@ MeshData make_plane() {
     return m;
 }
 
+// --- Cylinder --------------------------------------------------------------------------------
+// The side: two circles of `segments` + 1 vertices (the seam vertex is repeated so each quad
+// indexes its own neighbours), normals radial. Each cap: a centre vertex and a ring of its own
+// with normal +-z, as a fan.
+MeshData make_cylinder(int segments) {
+    MeshData m;
+    auto ring_point = [segments](int s) {
+        const float phi = glm::two_pi<float>() * float(s % segments) / float(segments);
+        return glm::vec2{std::cos(phi), std::sin(phi)};
+    };
+    for (int s = 0; s <= segments; ++s) {
+        const glm::vec2 c = ring_point(s);
+        const glm::vec3 n{c.x, c.y, 0.0f};
+        m.vertices.push_back({{c.x, c.y, -1.0f}, n}); // 2s: bottom
+        m.vertices.push_back({{c.x, c.y, 1.0f}, n});  // 2s + 1: top
+    }
+    for (int s = 0; s < segments; ++s) {
+        const auto b0 = std::uint32_t(2 * s), t0 = b0 + 1, b1 = b0 + 2, t1 = b0 + 3;
+        m.indices.insert(m.indices.end(), {b0, b1, t1, b0, t1, t0});
+    }
+    for (float z : {1.0f, -1.0f}) {
+        const glm::vec3 n{0.0f, 0.0f, z};
+        const auto centre = std::uint32_t(m.vertices.size());
+        m.vertices.push_back({n, n});
+        for (int s = 0; s < segments; ++s) {
+            const glm::vec2 c = ring_point(s);
+            m.vertices.push_back({{c.x, c.y, z}, n});
+        }
+        for (int s = 0; s < segments; ++s) {
+            const auto a = centre + 1 + std::uint32_t(s);
+            const auto b = centre + 1 + std::uint32_t((s + 1) % segments);
+            // Counter-clockwise seen from outside: from above on the top cap, from below on the
+            // bottom one, where the ring's order runs the other way.
+            if (z > 0)
+                m.indices.insert(m.indices.end(), {centre, a, b});
+            else
+                m.indices.insert(m.indices.end(), {centre, b, a});
+        }
+    }
+    return m;
+}
+
 MeshData make_mesh(MeshKind kind) {
     switch (kind) {
     case MeshKind::Sphere:
@@ -89,8 +133,43 @@ MeshData make_mesh(MeshKind kind) {
         return make_box();
     case MeshKind::Plane:
         return make_plane();
+    case MeshKind::Cylinder:
+        return make_cylinder();
+    case MeshKind::Custom:
+        break;
     }
-    return {};
+    throw std::invalid_argument("make_mesh: custom meshes come from SceneView::meshes");
+}
+
+// --- Custom meshes ---------------------------------------------------------------------------
+MeshData flat_shaded_mesh(const std::vector<glm::vec3>& positions,
+                          const std::vector<std::uint32_t>& triangle_indices) {
+    if (triangle_indices.size() % 3 != 0)
+        throw std::invalid_argument("flat_shaded_mesh: " + std::to_string(triangle_indices.size()) +
+                                    " indices is not a whole number of triangles");
+    MeshData m;
+    m.vertices.reserve(triangle_indices.size());
+    m.indices.reserve(triangle_indices.size());
+    for (std::size_t i = 0; i < triangle_indices.size(); i += 3) {
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t index = triangle_indices[i + std::size_t(k)];
+            if (index >= positions.size())
+                throw std::invalid_argument("flat_shaded_mesh: triangle " + std::to_string(i / 3) +
+                                            " uses vertex " + std::to_string(index) + " of " +
+                                            std::to_string(positions.size()));
+            p[k] = positions[index];
+        }
+        const glm::vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
+        const float area2 = glm::length(face);
+        if (!(area2 > 0.0f)) continue; // degenerate: no area, no normal
+        const glm::vec3 n = face / area2;
+        for (const glm::vec3& q : p) {
+            m.indices.push_back(std::uint32_t(m.vertices.size()));
+            m.vertices.push_back({q, n});
+        }
+    }
+    return m;
 }
 
 // --- GPU upload ------------------------------------------------------------------------------

@@ -1,10 +1,11 @@
 #pragma once
 // Procedural meshes for each MeshKind, built once on the CPU (MeshData) and uploaded once to the
-// GPU (GpuMesh). Conventions shared by all meshes:
-//   - indexed triangles, wound counter-clockwise when seen from outside (front faces);
-//   - one normal per vertex: smooth on the sphere (the normal of the true surface at that point),
-//     flat on the box (each face has its own 4 vertices so its corners do not share normals);
+// GPU (GpuMesh). Conventions shared by all meshes are in mesh_data.h; in addition:
+//   - normals are smooth on the sphere and the cylinder's side (the normal of the true surface at
+//     that point), flat on the box and the cylinder's caps (a face has its own vertices so its
+//     corners do not share normals);
 //   - unit size, placed in the world by Instance::transform (see scene_view.h).
+#include "render/mesh_data.h"
 #include "render/scene_view.h"
 
 #include <GL/gl.h>
@@ -15,21 +16,15 @@
 
 namespace tumble::render {
 
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
-
-struct MeshData {
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices; // three per triangle
-};
-
 // Unit sphere (radius 1) as latitude/longitude bands around the z axis: `segments` around,
 // `rings` from pole to pole. 64 x 32 looks round at 720p.
 MeshData make_sphere(int segments = 64, int rings = 32);
 MeshData make_box();   // [-1,1]^3, 24 vertices (4 per face), flat normals
 MeshData make_plane(); // the square [-1,1]^2 at z = 0, normal +z
+// Unit cylinder: radius 1 around the z axis, z in [-1, 1], `segments` around, closed by two flat
+// caps (their own vertices, normals +-z). A capsule is drawn as this plus two spheres.
+MeshData make_cylinder(int segments = 48);
+// The unit mesh of a built-in kind (not MeshKind::Custom, whose meshes come from the SceneView).
 MeshData make_mesh(MeshKind kind);
 
 // A mesh in GPU memory: vertex buffer + index buffer, described by a vertex array object

@@ -22,11 +22,19 @@
 
 #include <array>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 namespace tumble::render {
 namespace {
 
-constexpr std::array kMeshKinds{MeshKind::Sphere, MeshKind::Box, MeshKind::Plane};
+// The built-in unit meshes, uploaded once; the array is indexed by MeshKind.
+constexpr std::array kBuiltinKinds{MeshKind::Sphere, MeshKind::Box, MeshKind::Plane,
+                                   MeshKind::Cylinder};
+// Drawing order: solid bodies first, the ground last (its hidden pixels then fail the depth test
+// before they are shaded).
+constexpr std::array kDrawOrder{MeshKind::Sphere, MeshKind::Box, MeshKind::Cylinder,
+                                MeshKind::Custom, MeshKind::Plane};
 
 // How each kind of mesh looks besides its colour. Closed meshes (sphere, box) cull their back
 // faces, which are always hidden; the plane is seen from both sides.
@@ -45,6 +53,10 @@ Material material_of(MeshKind kind) {
         return {0.25f, 40.0f, false, true};
     case MeshKind::Plane:
         return {0.04f, 16.0f, true, false};
+    case MeshKind::Cylinder:
+        return {0.3f, 50.0f, false, true};
+    case MeshKind::Custom: // two-sided: an OBJ file's winding is not to be trusted
+        return {0.25f, 40.0f, false, false};
     }
     return {0.0f, 1.0f, false, false};
 }
@@ -104,6 +116,40 @@ Framebuffer make_target(const RenderOptions& o) {
     return Framebuffer(o.width, o.height);
 }
 
+// GPU copies of the SceneView's custom meshes, keyed by the MeshData they were made from. An
+// entry lives while its MeshData does (weak_ptr), so a freed mesh whose address is reused by a
+// new one is never mistaken for it.
+class CustomMeshCache {
+  public:
+    // The GPU mesh of every view.meshes[i], uploading the ones not seen before. The pointers stay
+    // valid until the next call.
+    const std::vector<const GpuMesh*>& resolve(const SceneView& view) {
+        std::erase_if(entries_, [](const Entry& e) { return e.source.expired(); });
+        resolved_.clear();
+        for (const auto& mesh : view.meshes) {
+            if (!mesh) throw RenderError("SceneView::meshes holds a null mesh");
+            Entry* found = nullptr;
+            for (Entry& e : entries_)
+                if (e.key == mesh.get()) found = &e;
+            if (!found) {
+                entries_.push_back({mesh, mesh.get(), std::make_unique<GpuMesh>(*mesh)});
+                found = &entries_.back();
+            }
+            resolved_.push_back(found->gpu.get());
+        }
+        return resolved_;
+    }
+
+  private:
+    struct Entry {
+        std::weak_ptr<const MeshData> source;
+        const MeshData* key;
+        std::unique_ptr<GpuMesh> gpu;
+    };
+    std::vector<Entry> entries_;
+    std::vector<const GpuMesh*> resolved_;
+};
+
 } // namespace
 
 struct Renderer::Impl {
@@ -114,7 +160,8 @@ struct Renderer::Impl {
     ShaderProgram sky;
     LitUniforms lit_uniforms;
     SkyUniforms sky_uniforms;
-    std::array<GpuMesh, kMeshKinds.size()> meshes; // indexed by MeshKind
+    std::array<GpuMesh, kBuiltinKinds.size()> meshes; // indexed by MeshKind
+    CustomMeshCache custom_meshes;
     GLuint empty_vao = 0; // core profile draws need a vertex array, even one with no attributes
 
     explicit Impl(const RenderOptions& o)
@@ -122,7 +169,7 @@ struct Renderer::Impl {
           lit(shader_asset("lit.vert"), shader_asset("lit.frag")),
           sky(shader_asset("sky.vert"), shader_asset("sky.frag")), lit_uniforms(lit),
           sky_uniforms(sky) {
-        for (MeshKind kind : kMeshKinds) meshes[std::size_t(kind)] = GpuMesh(make_mesh(kind));
+        for (MeshKind kind : kBuiltinKinds) meshes[std::size_t(kind)] = GpuMesh(make_mesh(kind));
         glGenVertexArrays(1, &empty_vao);
         check_gl("while setting up the renderer");
     }
@@ -135,7 +182,8 @@ struct Renderer::Impl {
 
     void clear(const SceneView& view);
     void scene_pass(const SceneView& view, const FrameMatrices& m);
-    void draw_kind(const SceneView& view, MeshKind kind);
+    void draw_kind(const SceneView& view, MeshKind kind, const std::vector<const GpuMesh*>& custom);
+    void draw_instance(const Instance& instance, const GpuMesh& mesh);
     void sky_pass(const SceneView& view, const FrameMatrices& m);
 };
 
@@ -161,13 +209,14 @@ void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
     glUniform3fv(u.light_color, 1, glm::value_ptr(view.light.color));
     glUniform1f(u.ambient, view.light.ambient);
     glUniform3fv(u.background, 1, glm::value_ptr(view.background));
-    // Spheres and boxes first, the ground last: the ground's hidden pixels then fail the depth
-    // test before they are shaded.
-    for (MeshKind kind : kMeshKinds) draw_kind(view, kind);
+    const std::vector<const GpuMesh*>& custom = custom_meshes.resolve(view);
+    for (MeshKind kind : kDrawOrder) draw_kind(view, kind, custom);
 }
 
-// Draws every instance of one mesh kind: the mesh and material are bound once for all of them.
-void Renderer::Impl::draw_kind(const SceneView& view, MeshKind kind) {
+// Draws every instance of one mesh kind: the material (and for built-in kinds the mesh) is bound
+// once for all of them.
+void Renderer::Impl::draw_kind(const SceneView& view, MeshKind kind,
+                               const std::vector<const GpuMesh*>& custom) {
     const Material mat = material_of(kind);
     const LitUniforms& u = lit_uniforms;
     glUniform1f(u.specular, mat.specular);
@@ -177,18 +226,32 @@ void Renderer::Impl::draw_kind(const SceneView& view, MeshKind kind) {
         glEnable(GL_CULL_FACE);
     else
         glDisable(GL_CULL_FACE);
+    if (kind == MeshKind::Custom) {
+        for (const Instance& instance : view.instances) {
+            if (instance.mesh != kind) continue;
+            if (instance.mesh_id >= custom.size())
+                throw RenderError("instance uses custom mesh " + std::to_string(instance.mesh_id) +
+                                  " but the view has " + std::to_string(custom.size()));
+            custom[instance.mesh_id]->bind();
+            draw_instance(instance, *custom[instance.mesh_id]);
+        }
+        return;
+    }
     const GpuMesh& mesh = meshes[std::size_t(kind)];
     mesh.bind();
-    for (const Instance& instance : view.instances) {
-        if (instance.mesh != kind) continue;
-        // Normals transform by the inverse-transpose: a box squashed in z must get normals
-        // stretched in z to stay perpendicular to its faces.
-        const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(instance.transform));
-        glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(instance.transform));
-        glUniformMatrix3fv(u.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
-        glUniform3fv(u.color, 1, glm::value_ptr(instance.color));
-        mesh.draw();
-    }
+    for (const Instance& instance : view.instances)
+        if (instance.mesh == kind) draw_instance(instance, mesh);
+}
+
+void Renderer::Impl::draw_instance(const Instance& instance, const GpuMesh& mesh) {
+    const LitUniforms& u = lit_uniforms;
+    // Normals transform by the inverse-transpose: a box squashed in z must get normals
+    // stretched in z to stay perpendicular to its faces.
+    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(instance.transform));
+    glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(instance.transform));
+    glUniformMatrix3fv(u.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
+    glUniform3fv(u.color, 1, glm::value_ptr(instance.color));
+    mesh.draw();
 }
 
 void Renderer::Impl::sky_pass(const SceneView& view, const FrameMatrices& m) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace tumble::render {
 namespace {
@@ -54,6 +55,44 @@ TEST(RendererMesh, PlaneIsUnitSquareFacingUp) {
         EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
     }
     expect_outward_ccw(m);
+}
+
+TEST(RendererMesh, CylinderIsUnitWithRadialSideAndFlatCaps) {
+    const MeshData m = make_cylinder(12);
+    int side = 0, caps = 0;
+    for (const Vertex& v : m.vertices) {
+        EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-6f);
+        if (v.normal.z == 0.0f) { // side: on the unit circle, normal radial
+            ++side;
+            EXPECT_NEAR(std::hypot(v.position.x, v.position.y), 1.0f, 1e-6f);
+            EXPECT_EQ(std::abs(v.position.z), 1.0f);
+            EXPECT_NEAR(glm::length(v.normal - glm::vec3(v.position.x, v.position.y, 0)), 0.0f,
+                        1e-6f);
+        } else { // cap: on the plane z = +-1 its normal names, inside the unit disk
+            ++caps;
+            EXPECT_EQ(v.position.z, v.normal.z);
+            EXPECT_LE(std::hypot(v.position.x, v.position.y), 1.0f + 1e-6f);
+        }
+    }
+    EXPECT_EQ(side, 2 * 13);
+    EXPECT_EQ(caps, 2 * 13);
+    EXPECT_EQ(m.indices.size(), 3u * (2 * 12 + 2 * 12));
+    expect_outward_ccw(m);
+}
+
+TEST(RendererMesh, FlatShadedMeshGivesEachTriangleItsFaceNormal) {
+    // A tetrahedron, one face wound each way would be a bug in the file; here all are outward.
+    const std::vector<glm::vec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<std::uint32_t> tris{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 0, 1};
+    const MeshData m = flat_shaded_mesh(p, tris); // the last triangle is degenerate: dropped
+    EXPECT_EQ(m.vertices.size(), 12u);
+    EXPECT_EQ(m.indices.size(), 12u);
+    EXPECT_EQ(m.vertices[0].normal, glm::vec3(0, 0, -1));
+    const float s = 1.0f / std::sqrt(3.0f);
+    EXPECT_NEAR(glm::length(m.vertices[9].normal - glm::vec3(s, s, s)), 0.0f, 1e-6f);
+    expect_outward_ccw(m);
+    EXPECT_THROW(flat_shaded_mesh(p, {0, 1}), std::invalid_argument);
+    EXPECT_THROW(flat_shaded_mesh(p, {0, 1, 4}), std::invalid_argument);
 }
 
 } // namespace
