@@ -81,7 +81,10 @@ void read_body(JsonReader r, int index, physics::BodyDef& b, BodyLook& look) {
         b.motion = is_static ? physics::Motion::Static : physics::Motion::Dynamic;
     }
     read_mass(r, b);
-    if (auto i = r.optional("inertia")) b.inertia = read_inertia(*i);
+    if (auto i = r.optional("inertia")) {
+        b.inertia = read_inertia(*i);
+        if (b.inertia.isZero(0.0)) i->fail("expected positive moments of inertia, got all zeros");
+    }
     if (auto p = r.optional("position"))
         b.position = read_vec3(*p, "a position [x, y, z] in metres");
     auto normal = plane ? r.optional("normal") : std::nullopt;

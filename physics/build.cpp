@@ -86,8 +86,8 @@ void add_body(Model& m, const BodyDef& b, int i) {
     if (dynamic) {
         require(std::isfinite(b.mass) && b.mass > 0.0, i, "mass",
                 "mass of a dynamic body must be positive and finite");
-        moments = b.inertia ? principal_axes(*b.inertia, body_from_mass, i)
-                            : shape_principal_inertia(b.shape, b.mass);
+        moments = b.inertia.isZero(0.0) ? shape_principal_inertia(b.shape, b.mass)
+                                        : principal_axes(b.inertia, body_from_mass, i);
         validate_moments(moments, i);
     }
     require(std::isfinite(b.gravity_scale), i, "gravity_scale", "gravity_scale must be finite");

@@ -4,7 +4,6 @@
 #include "physics/model.h"
 #include "physics/state.h"
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,9 +20,9 @@ struct BodyDef {
     Shape shape;
     Motion motion = Motion::Dynamic;
     double mass = 1.0; // kg; ignored for static bodies
-    // Inertia tensor about the centre of mass in body axes, kg m^2. Unset: from shape and mass.
-    // May be non-diagonal; build_model() diagonalises it (principal moments + axes).
-    std::optional<Mat3> inertia;
+    // Inertia tensor about the centre of mass in body axes, kg m^2. All zero (the default): from
+    // shape and mass. May be non-diagonal; build_model() diagonalises it (moments + axes).
+    Mat3 inertia = Mat3::Zero();
     Vec3 position = Vec3::Zero();         // body origin, world, m
     Quat orientation = Quat::Identity();  // body -> world
     Vec3 velocity = Vec3::Zero();         // world, m/s
