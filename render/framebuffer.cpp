@@ -10,15 +10,17 @@
 
 namespace tumble::render {
 
-Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+Framebuffer::Framebuffer(int width, int height, int samples)
+    : width_(width), height_(height), samples_(samples) {
     // A renderbuffer is an image the GPU can draw into but not sample; right for buffers we
-    // only read back (a shadow map, which is sampled, will be a texture instead).
+    // only read back or resolve (the shadow map, which is sampled, is a texture instead).
+    const GLsizei n = samples > 1 ? samples : 0;
     glGenRenderbuffers(1, &color_);
     glBindRenderbuffer(GL_RENDERBUFFER, color_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_RGBA8, width, height);
     glGenRenderbuffers(1, &depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_DEPTH_COMPONENT24, width, height);
 
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -40,7 +42,7 @@ Framebuffer::~Framebuffer() {
 Framebuffer::Framebuffer(Framebuffer&& other) noexcept
     : fbo_(std::exchange(other.fbo_, 0)), color_(std::exchange(other.color_, 0)),
       depth_(std::exchange(other.depth_, 0)), width_(std::exchange(other.width_, 0)),
-      height_(std::exchange(other.height_, 0)) {}
+      height_(std::exchange(other.height_, 0)), samples_(std::exchange(other.samples_, 1)) {}
 
 Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
     if (this != &other) {
@@ -50,6 +52,7 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
         depth_ = std::exchange(other.depth_, 0);
         width_ = std::exchange(other.width_, 0);
         height_ = std::exchange(other.height_, 0);
+        samples_ = std::exchange(other.samples_, 1);
     }
     return *this;
 }
@@ -64,6 +67,13 @@ void Framebuffer::destroy() {
 void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, width_, height_);
+}
+
+void Framebuffer::resolve_into(const Framebuffer& target) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, target.width_, target.height_,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Framebuffer::read_rgb(Image& out) const {

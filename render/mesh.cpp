@@ -3,6 +3,7 @@
 #include <GL/glext.h>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -174,6 +175,10 @@ MeshData flat_shaded_mesh(const std::vector<glm::vec3>& positions,
 
 // --- GPU upload ------------------------------------------------------------------------------
 GpuMesh::GpuMesh(const MeshData& data) : index_count_(GLsizei(data.indices.size())) {
+    for (const Vertex& v : data.vertices) {
+        half_extent_ = glm::max(half_extent_, glm::abs(v.position));
+        radius_ = std::max(radius_, glm::length(v.position));
+    }
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vbo_);
     glGenBuffers(1, &ebo_);
@@ -203,7 +208,8 @@ GpuMesh::~GpuMesh() {
 
 GpuMesh::GpuMesh(GpuMesh&& other) noexcept
     : vao_(std::exchange(other.vao_, 0)), vbo_(std::exchange(other.vbo_, 0)),
-      ebo_(std::exchange(other.ebo_, 0)), index_count_(std::exchange(other.index_count_, 0)) {}
+      ebo_(std::exchange(other.ebo_, 0)), index_count_(std::exchange(other.index_count_, 0)),
+      half_extent_(other.half_extent_), radius_(other.radius_) {}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
     if (this != &other) {
@@ -212,6 +218,8 @@ GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
         vbo_ = std::exchange(other.vbo_, 0);
         ebo_ = std::exchange(other.ebo_, 0);
         index_count_ = std::exchange(other.index_count_, 0);
+        half_extent_ = other.half_extent_;
+        radius_ = other.radius_;
     }
     return *this;
 }
@@ -229,6 +237,10 @@ void GpuMesh::bind() const {
 
 void GpuMesh::draw() const {
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+void GpuMesh::draw_instanced(GLsizei count) const {
+    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, count);
 }
 
 } // namespace tumble::render

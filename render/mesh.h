@@ -39,13 +39,21 @@ class GpuMesh {
 
     void bind() const; // makes this mesh's vertex array current
     void draw() const; // draws all triangles; call bind() first
+    // Draws `count` instances; per-instance attributes must be set up on this vertex array.
+    void draw_instanced(GLsizei count) const;
     GLsizei index_count() const { return index_count_; }
+    // Bounds of the vertices in mesh space, for culling and sizing: the largest |x|, |y|, |z|
+    // and the largest distance from the origin.
+    glm::vec3 half_extent() const { return half_extent_; }
+    float radius() const { return radius_; }
 
   private:
     void destroy();
 
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLsizei index_count_ = 0;
+    glm::vec3 half_extent_{0.0f};
+    float radius_ = 0.0f;
 };
 
 } // namespace tumble::render

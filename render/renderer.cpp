@@ -1,78 +1,54 @@
-// The renderer: one frame is a short list of passes over an off-screen framebuffer.
+// The renderer: one frame is a short list of passes.
 //
-//   1. clear       colour and depth, so a frame never depends on the one before
-//   2. scene pass  every instance, Blinn-Phong lit (lit.vert / lit.frag), grouped by mesh kind
-//   3. sky pass    one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
-//                  last so the depth test skips every pixel an object already covers
-//   4. read back   glReadPixels into the caller's Image, flipped to top-down rows
-//
-// Later passes slot in between: a shadow pass (depth from the light) before 2, an MSAA resolve
-// between 3 and 4, a text overlay after 3. Everything lives in Renderer::Impl: no globals.
+//   1. draw lists  cull, choose levels of detail, group instances into batches (draw_list.h)
+//   2. shadow map  the casters' depth seen from the key light (shadow_map.h, shadow.vert/.frag)
+//   3. clear       colour and depth of the (multisampled) target: no frame depends on the last
+//   4. scene       every batch, one instanced draw call each, lit (lit.vert / lit.frag)
+//   5. sky         one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
+//                  after the scene so the depth test skips every pixel an object already covers
+//   6. resolve     average each pixel's MSAA samples into the single-sample target
+//   7. overlay     text in a corner (text_overlay.h), after the resolve: it needs no MSAA
+//   8. read back   glReadPixels into the caller's Image, flipped to top-down rows
+// Everything lives in Renderer::Impl: no globals.
 #include "render/renderer.h"
 
+#include "render/batches.h"
 #include "render/camera.h"
+#include "render/draw_list.h"
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
 #include "render/mesh.h"
 #include "render/shader.h"
+#include "render/shadow_map.h"
+#include "render/text_overlay.h"
 
 #include <GL/glext.h>
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <array>
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace tumble::render {
 namespace {
 
-// The built-in unit meshes, uploaded once; the array is indexed by MeshKind.
-constexpr std::array kBuiltinKinds{MeshKind::Sphere, MeshKind::Box, MeshKind::Plane,
-                                   MeshKind::Cylinder};
-// Drawing order: solid bodies first, the ground last (its hidden pixels then fail the depth test
-// before they are shaded).
-constexpr std::array kDrawOrder{MeshKind::Sphere, MeshKind::Box, MeshKind::Cylinder,
-                                MeshKind::Custom, MeshKind::Plane};
-
-// How each kind of mesh looks besides its colour. Closed meshes (sphere, box) cull their back
-// faces, which are always hidden; the plane is seen from both sides.
-struct Material {
-    float specular;  // highlight strength
-    float shininess; // highlight sharpness
-    bool checker;    // ground checkerboard
-    bool closed;     // cull back faces
-};
-
-Material material_of(MeshKind kind) {
-    switch (kind) {
-    case MeshKind::Sphere:
-        return {0.35f, 60.0f, false, true};
-    case MeshKind::Box:
-        return {0.25f, 40.0f, false, true};
-    case MeshKind::Plane:
-        return {0.04f, 16.0f, true, false};
-    case MeshKind::Cylinder:
-        return {0.3f, 50.0f, false, true};
-    case MeshKind::Custom: // two-sided: an OBJ file's winding is not to be trusted
-        return {0.25f, 40.0f, false, false};
-    }
-    return {0.0f, 1.0f, false, false};
-}
+// Width of the soft edge of a shadow, metres (at least 1.5 shadow-map texels).
+constexpr float kPenumbra = 0.025f;
 
 // Uniform locations of lit.vert + lit.frag, looked up once.
 struct LitUniforms {
-    GLint model, normal_matrix, view_proj, color, checker, specular, shininess;
-    GLint camera_pos, light_dir, light_color, ambient, background;
+    GLint view_proj, camera_pos, light_dir, light_color, ambient, background;
+    GLint light_view_proj, normal_offset, shadow_map, shadow_radius;
 
     explicit LitUniforms(const ShaderProgram& p)
-        : model(p.uniform("u_model")), normal_matrix(p.uniform("u_normal_matrix")),
-          view_proj(p.uniform("u_view_proj")), color(p.uniform("u_color")),
-          checker(p.uniform("u_checker")), specular(p.uniform("u_specular")),
-          shininess(p.uniform("u_shininess")), camera_pos(p.uniform("u_camera_pos")),
+        : view_proj(p.uniform("u_view_proj")), camera_pos(p.uniform("u_camera_pos")),
           light_dir(p.uniform("u_light_dir")), light_color(p.uniform("u_light_color")),
-          ambient(p.uniform("u_ambient")), background(p.uniform("u_background")) {}
+          ambient(p.uniform("u_ambient")), background(p.uniform("u_background")),
+          light_view_proj(p.uniform("u_light_view_proj")),
+          normal_offset(p.uniform("u_normal_offset")), shadow_map(p.uniform("u_shadow_map")),
+          shadow_radius(p.uniform("u_shadow_radius")) {}
 };
 
 struct SkyUniforms {
@@ -105,15 +81,20 @@ void check_gl(const char* where) {
     throw RenderError(std::string("OpenGL error ") + code + " " + where);
 }
 
-// The framebuffer every pass draws into, after checking the GL can make one that size.
-Framebuffer make_target(const RenderOptions& o) {
-    GLint max_size = 0;
+// Checks the image size against the GL's limit and settles the sample count.
+RenderOptions checked(RenderOptions o) {
+    GLint max_size = 0, max_samples = 1;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     if (o.width <= 0 || o.height <= 0 || o.width > max_size || o.height > max_size) {
         throw RenderError("image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
                           " is outside 1.." + std::to_string(max_size));
     }
-    return Framebuffer(o.width, o.height);
+    o.samples = std::clamp(o.samples, 1, std::max(1, int(max_samples)));
+    if (o.shadow_map_size < 16 || o.shadow_map_size > max_size)
+        throw RenderError("shadow map size " + std::to_string(o.shadow_map_size) +
+                          " is outside 16.." + std::to_string(max_size));
+    return o;
 }
 
 // GPU copies of the SceneView's custom meshes, keyed by the MeshData they were made from. An
@@ -150,26 +131,42 @@ class CustomMeshCache {
     std::vector<const GpuMesh*> resolved_;
 };
 
+const char* lit_defines(bool shadows) {
+    return shadows ? "#define SHADOWS\n" : "";
+}
+
 } // namespace
 
 struct Renderer::Impl {
-    RenderOptions options;
     GlContext context; // declared first: created before, and destroyed after, every GL object
-    Framebuffer target;
-    ShaderProgram lit;
-    ShaderProgram sky;
+    RenderOptions options;
+    Framebuffer target;              // single-sample: resolved image, overlay, read back
+    std::optional<Framebuffer> msaa; // when options.samples > 1
+    ShaderProgram lit, sky;
+    std::optional<ShaderProgram> shadow_program;
     LitUniforms lit_uniforms;
     SkyUniforms sky_uniforms;
-    std::array<GpuMesh, kBuiltinKinds.size()> meshes; // indexed by MeshKind
+    GLint shadow_light_view_proj = -1;
+    MeshLibrary library;
     CustomMeshCache custom_meshes;
+    InstanceBuffer camera_instances, shadow_instances;
+    std::optional<ShadowMap> shadow_map;
+    std::unique_ptr<TextOverlay> overlay; // made on first use
+    DrawLists lists;
+    FrameStats stats;
     GLuint empty_vao = 0; // core profile draws need a vertex array, even one with no attributes
 
     explicit Impl(const RenderOptions& o)
-        : options(o), target(make_target(o)),
-          lit(shader_asset("lit.vert"), shader_asset("lit.frag")),
+        : options(checked(o)), target(options.width, options.height),
+          lit(shader_asset("lit.vert"), shader_asset("lit.frag"), lit_defines(options.shadows)),
           sky(shader_asset("sky.vert"), shader_asset("sky.frag")), lit_uniforms(lit),
           sky_uniforms(sky) {
-        for (MeshKind kind : kBuiltinKinds) meshes[std::size_t(kind)] = GpuMesh(make_mesh(kind));
+        if (options.samples > 1) msaa.emplace(options.width, options.height, options.samples);
+        if (options.shadows) {
+            shadow_program.emplace(shader_asset("shadow.vert"), shader_asset("shadow.frag"));
+            shadow_light_view_proj = shadow_program->uniform("u_light_view_proj");
+            shadow_map.emplace(options.shadow_map_size);
+        }
         glGenVertexArrays(1, &empty_vao);
         check_gl("while setting up the renderer");
     }
@@ -180,19 +177,24 @@ struct Renderer::Impl {
         glDeleteVertexArrays(1, &empty_vao);
     }
 
-    void clear(const SceneView& view);
+    void shadow_pass();
     void scene_pass(const SceneView& view, const FrameMatrices& m);
-    void draw_kind(const SceneView& view, MeshKind kind, const std::vector<const GpuMesh*>& custom);
-    void draw_instance(const Instance& instance, const GpuMesh& mesh);
     void sky_pass(const SceneView& view, const FrameMatrices& m);
 };
 
-void Renderer::Impl::clear(const SceneView& view) {
-    target.bind();
-    glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
-    glClearDepth(1.0);
-    glDepthMask(GL_TRUE); // glClear respects the depth write mask
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+void Renderer::Impl::shadow_pass() {
+    shadow_map->begin_pass(); // cleared even with no casters: then everything reads as lit
+    if (lists.light.empty) return;
+    shadow_instances.upload(lists.shadow);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    // A small slope-scaled offset for the two-sided meshes, whose lit faces are in the map too.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    glUseProgram(shadow_program->id());
+    glUniformMatrix4fv(shadow_light_view_proj, 1, GL_FALSE, glm::value_ptr(lists.light.view_proj));
+    shadow_instances.draw(lists.shadow, GL_FRONT); // closed meshes: back faces only
+    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
@@ -209,49 +211,19 @@ void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
     glUniform3fv(u.light_color, 1, glm::value_ptr(view.light.color));
     glUniform1f(u.ambient, view.light.ambient);
     glUniform3fv(u.background, 1, glm::value_ptr(view.background));
-    const std::vector<const GpuMesh*>& custom = custom_meshes.resolve(view);
-    for (MeshKind kind : kDrawOrder) draw_kind(view, kind, custom);
-}
-
-// Draws every instance of one mesh kind: the material (and for built-in kinds the mesh) is bound
-// once for all of them.
-void Renderer::Impl::draw_kind(const SceneView& view, MeshKind kind,
-                               const std::vector<const GpuMesh*>& custom) {
-    const Material mat = material_of(kind);
-    const LitUniforms& u = lit_uniforms;
-    glUniform1f(u.specular, mat.specular);
-    glUniform1f(u.shininess, mat.shininess);
-    glUniform1i(u.checker, mat.checker ? 1 : 0);
-    if (mat.closed)
-        glEnable(GL_CULL_FACE);
-    else
-        glDisable(GL_CULL_FACE);
-    if (kind == MeshKind::Custom) {
-        for (const Instance& instance : view.instances) {
-            if (instance.mesh != kind) continue;
-            if (instance.mesh_id >= custom.size())
-                throw RenderError("instance uses custom mesh " + std::to_string(instance.mesh_id) +
-                                  " but the view has " + std::to_string(custom.size()));
-            custom[instance.mesh_id]->bind();
-            draw_instance(instance, *custom[instance.mesh_id]);
-        }
-        return;
+    if (options.shadows) {
+        const LightFrame& light = lists.light;
+        const float extent = light.texel_size * float(options.shadow_map_size); // metres
+        glUniformMatrix4fv(u.light_view_proj, 1, GL_FALSE,
+                           glm::value_ptr(light.empty ? glm::mat4(1.0f) : light.view_proj));
+        glUniform1f(u.normal_offset, 1.5f * light.texel_size);
+        glUniform1f(u.shadow_radius,
+                    light.empty ? 0.0f : std::max(kPenumbra, 1.5f * light.texel_size) / extent);
+        glUniform1i(u.shadow_map, 1);
+        shadow_map->bind_texture(GL_TEXTURE1);
     }
-    const GpuMesh& mesh = meshes[std::size_t(kind)];
-    mesh.bind();
-    for (const Instance& instance : view.instances)
-        if (instance.mesh == kind) draw_instance(instance, mesh);
-}
-
-void Renderer::Impl::draw_instance(const Instance& instance, const GpuMesh& mesh) {
-    const LitUniforms& u = lit_uniforms;
-    // Normals transform by the inverse-transpose: a box squashed in z must get normals
-    // stretched in z to stay perpendicular to its faces.
-    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(instance.transform));
-    glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(instance.transform));
-    glUniformMatrix3fv(u.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
-    glUniform3fv(u.color, 1, glm::value_ptr(instance.color));
-    mesh.draw();
+    camera_instances.upload(lists.camera);
+    camera_instances.draw(lists.camera, GL_BACK);
 }
 
 void Renderer::Impl::sky_pass(const SceneView& view, const FrameMatrices& m) {
@@ -277,17 +249,45 @@ Renderer::~Renderer() = default;
 void Renderer::draw(const SceneView& view, Image& out) {
     Impl& r = *impl_;
     r.context.make_current();
-    const float aspect = float(r.options.width) / float(r.options.height);
-    const FrameMatrices m = frame_matrices(view.camera, aspect);
-    r.clear(view);
+    const RenderOptions& o = r.options;
+    const FrameMatrices m = frame_matrices(view.camera, float(o.width) / float(o.height));
+    DrawSettings settings;
+    settings.view_proj = m.view_proj;
+    settings.height = o.height;
+    settings.shadows = o.shadows;
+    settings.shadow_map_size = o.shadow_map_size;
+    build_draw_lists(view, settings, r.library, r.custom_meshes.resolve(view), r.lists);
+    if (o.shadows) r.shadow_pass();
+
+    const Framebuffer& main = r.msaa ? *r.msaa : r.target;
+    main.bind();
+    glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
+    glClearDepth(1.0);
+    glDepthMask(GL_TRUE); // glClear respects the depth write mask
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     r.scene_pass(view, m);
     r.sky_pass(view, m);
+    if (r.msaa) r.msaa->resolve_into(r.target);
+    if (!view.overlay.empty()) {
+        if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.height);
+        r.target.bind();
+        r.overlay->draw(view.overlay, o.width, o.height);
+    }
     r.target.read_rgb(out);
     check_gl("while drawing a frame");
+
+    r.stats.triangles = r.lists.camera.triangles();
+    r.stats.shadow_triangles = r.lists.light.empty ? 0 : r.lists.shadow.triangles();
+    r.stats.batches = int(r.lists.camera.batches().size() +
+                          (r.lists.light.empty ? 0 : r.lists.shadow.batches().size()));
+    r.stats.instances = int(r.lists.camera.data().size());
 }
 
 const RenderOptions& Renderer::options() const {
     return impl_->options;
+}
+const FrameStats& Renderer::last_frame() const {
+    return impl_->stats;
 }
 std::string Renderer::gl_renderer() const {
     return impl_->context.renderer();

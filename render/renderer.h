@@ -4,6 +4,7 @@
 #include "render/image.h"
 #include "render/scene_view.h"
 
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,19 @@ struct RenderError : std::runtime_error {
 struct RenderOptions {
     int width = 1280;
     int height = 720;
+    // Multisample anti-aliasing: coverage and depth samples per pixel (1 = none). Clamped to the
+    // context's GL_MAX_SAMPLES (4 on llvmpipe); options() reports the count in use.
+    int samples = 4;
+    bool shadows = true;        // shadow map from the key light
+    int shadow_map_size = 2048; // texels per side
+};
+
+// What the last draw() did, for --stats and benchmarks.
+struct FrameStats {
+    std::uint64_t triangles = 0;        // seen by the camera (after culling, at their detail)
+    std::uint64_t shadow_triangles = 0; // drawn into the shadow map
+    int batches = 0;                    // instanced draw calls, both passes
+    int instances = 0;                  // drawn by the camera
 };
 
 // Threading: GL contexts are current per thread. draw() makes this renderer's context current on
@@ -36,6 +50,7 @@ class Renderer {
     void draw(const SceneView& view, Image& out);
 
     const RenderOptions& options() const;
+    const FrameStats& last_frame() const;
     std::string gl_renderer() const; // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string gl_version() const;  // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
 

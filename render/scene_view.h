@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace tumble::render {
@@ -29,6 +30,17 @@ struct Light {
 
 enum class MeshKind : std::uint8_t { Sphere, Box, Plane, Cylinder, Custom };
 
+// How a surface reflects light besides its colour: a small set of knobs, each in [0, 1].
+//   roughness  0 = a small sharp highlight (polished) .. 1 = a broad faint one (matte)
+//   specular   strength of the highlight and of the sky's reflection at grazing angles
+//   metallic   0 = dielectric (white highlights over coloured diffuse light), 1 = metal (no
+//              diffuse light; highlights and reflections take the base colour)
+struct Material {
+    float roughness = 0.45f;
+    float specular = 0.5f;
+    float metallic = 0.0f;
+};
+
 // Index into SceneView::meshes, for instances of MeshKind::Custom.
 using MeshId = std::uint32_t;
 
@@ -39,11 +51,16 @@ using MeshId = std::uint32_t;
 // Custom instance draws SceneView::meshes[mesh_id] as given (its vertices are in body frame:
 // transform is then just the body's pose); custom meshes are drawn two-sided, so a mesh wound
 // the wrong way round still shows its outside.
+// Planes are drawn with a checkerboard (0.5 m squares) and cast no shadow. `axes` adds the body's
+// own x, y, z axes as red, green and blue rods poking out of the shape (their lengths follow the
+// transform's scale along each axis).
 struct Instance {
     MeshKind mesh = MeshKind::Sphere;
     glm::mat4 transform{1.0f};
     glm::vec3 color{0.8f, 0.8f, 0.8f}; // sRGB base colour in [0,1]
     MeshId mesh_id = 0;                // MeshKind::Custom only
+    Material material{};
+    bool axes = false;
 };
 
 struct SceneView {
@@ -56,6 +73,9 @@ struct SceneView {
     // alive (it holds a weak_ptr), so pass the same shared_ptr every frame: copying it into the
     // view costs a reference count, not an upload. A MeshData must not change once shared.
     std::vector<std::shared_ptr<const MeshData>> meshes;
+    // Text drawn in the top-left corner over a translucent panel, one entry per line (ASCII;
+    // other bytes show as '?'). Empty: no overlay.
+    std::vector<std::string> overlay;
 };
 
 } // namespace tumble::render

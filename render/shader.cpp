@@ -32,14 +32,16 @@ std::string program_log(GLuint program) {
 }
 
 // Compiles one stage from the version line, the shared helpers and the file (see shader.h).
-GLuint compile(GLenum stage, ShaderSource source) {
+GLuint compile(GLenum stage, ShaderSource source, std::string_view defines) {
     const std::string_view common = shader_asset(kCommonName).text;
     const std::string_view line_reset = "\n#line 1\n";
-    const char* parts[] = {kVersion.data(), common.data(), line_reset.data(), source.text.data()};
-    const GLint lengths[] = {GLint(kVersion.size()), GLint(common.size()), GLint(line_reset.size()),
-                             GLint(source.text.size())};
+    if (defines.data() == nullptr) defines = ""; // a default string_view has no storage at all
+    const char* parts[] = {kVersion.data(), defines.data(), common.data(), line_reset.data(),
+                           source.text.data()};
+    const GLint lengths[] = {GLint(kVersion.size()), GLint(defines.size()), GLint(common.size()),
+                             GLint(line_reset.size()), GLint(source.text.size())};
     const GLuint shader = glCreateShader(stage);
-    glShaderSource(shader, 4, parts, lengths);
+    glShaderSource(shader, 5, parts, lengths);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -65,11 +67,11 @@ ShaderSource shader_asset(std::string_view file_name) {
     return {file_name, text};
 }
 
-ShaderProgram::ShaderProgram(ShaderSource vertex, ShaderSource fragment) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex);
+ShaderProgram::ShaderProgram(ShaderSource vertex, ShaderSource fragment, std::string_view defines) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex, defines);
     GLuint fs = 0;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, fragment);
+        fs = compile(GL_FRAGMENT_SHADER, fragment, defines);
     } catch (...) {
         glDeleteShader(vs);
         throw;

@@ -2,10 +2,11 @@
 // GLSL programs: compile two stages, link them, and report failures with the shader's name and
 // the driver's log, so a typo in lit.frag says "lit.frag:12: ..." rather than "draw failed".
 //
-// Every stage is compiled from three strings (glShaderSource takes a list):
+// Every stage is compiled from four strings (glShaderSource takes a list):
 //   1. "#version 330 core"       the GLSL dialect of GL 3.3 core
-//   2. common.glsl               helpers shared by all shaders (GLSL 3.30 has no #include)
-//   3. "#line 1" + the file      so the driver's line numbers match the file's own lines
+//   2. the program's defines     e.g. "#define SHADOWS\n": variants of one shader, chosen once
+//   3. common.glsl               helpers shared by all shaders (GLSL 3.30 has no #include)
+//   4. "#line 1" + the file      so the driver's line numbers match the file's own lines
 #include <GL/gl.h>
 
 #include <string_view>
@@ -25,7 +26,8 @@ class ShaderProgram {
   public:
     ShaderProgram() = default;
     // Compiles and links; throws RenderError naming the failing shader, with the driver's log.
-    ShaderProgram(ShaderSource vertex, ShaderSource fragment);
+    // `defines` are "#define NAME\n" lines seen by both stages.
+    ShaderProgram(ShaderSource vertex, ShaderSource fragment, std::string_view defines = {});
     ~ShaderProgram();
     ShaderProgram(ShaderProgram&& other) noexcept;
     ShaderProgram& operator=(ShaderProgram&& other) noexcept;

@@ -1,17 +1,22 @@
-// lit.frag: Blinn-Phong shading of one surface point with the scene's key light plus ambient,
-// in linear light (see common.glsl), with a checker on the ground and fog in the distance.
+// lit.frag: shades one surface point, in linear light (see common.glsl):
+//   key light   Lambert diffuse + Blinn-Phong highlight, darkened where the shadow map says a
+//               caster is in the way (SHADOWS)
+//   ambient     light from the sky (more on faces turned up) on the diffuse colour
+//   reflection  the sky and ground mirrored in the surface, weighted by Fresnel (Schlick): strong
+//               at grazing angles, blurred towards the average sky the rougher the surface
+//   fog         distant points fade into the sky colour
+// plus a checkerboard on the ground.
 
 in vec3 v_world;
 in vec3 v_normal;
 flat in vec3 v_albedo;  // linear base colour
-flat in vec3 v_horizon; // linear sky colours, for the fog
+flat in vec3 v_horizon; // linear sky colours, for fog and reflections
 flat in vec3 v_zenith;
+flat in vec4 v_material; // shininess, specular, metallic, gloss (1 - roughness)
+flat in float v_checker; // 1 on the ground
 
 out vec4 frag_color;
 
-uniform bool u_checker;     // true for the ground plane: modulate by a checkerboard
-uniform float u_specular;   // strength of the highlight (0 = matte)
-uniform float u_shininess;  // Blinn-Phong exponent: larger = smaller, sharper highlight
 uniform vec3 u_camera_pos;  // world
 uniform vec3 u_light_dir;   // unit direction the light travels, world
 uniform vec3 u_light_color; // linear
@@ -20,6 +25,27 @@ uniform float u_ambient;    // fraction of the base colour lit by ambient light
 const float kSquare = 0.5;       // checker square size, metres
 const float kCheckerDark = 0.82; // dark squares' brightness relative to light ones: subtle
 const float kFogDistance = 60.0; // metres; fog covers 63% of the colour at this distance
+
+#ifdef SHADOWS
+in vec3 v_shadow;
+uniform sampler2DShadow u_shadow_map;
+uniform float u_shadow_radius; // filter radius in shadow-map coordinates (a fixed width, metres)
+
+// Eight points spread evenly over the unit disk (a Poisson disk). Each lookup of a
+// sampler2DShadow with linear filtering already blends a 2x2 comparison; eight of them over the
+// disk give a soft edge without visible steps.
+const vec2 kDisk[8] = vec2[8](vec2(-0.326, -0.406), vec2(-0.840, -0.074), vec2(-0.696, 0.457),
+                              vec2(-0.203, 0.621), vec2(0.962, -0.195), vec2(0.473, -0.480),
+                              vec2(0.519, 0.767), vec2(0.185, -0.893));
+
+// Fraction of the key light reaching this point: 1 lit, 0 in full shadow.
+float light_visibility() {
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i)
+        sum += texture(u_shadow_map, vec3(v_shadow.xy + kDisk[i] * u_shadow_radius, v_shadow.z));
+    return sum * 0.125;
+}
+#endif
 
 // A checkerboard of unit squares: 1 on light squares, 0 on dark ones. Averaged over the pixel's
 // footprint `w` (box filter, after Inigo Quilez), so far squares blend smoothly to grey instead
@@ -33,9 +59,20 @@ float checker(vec2 p) {
     return 0.5 - 0.5 * i.x * i.y;
 }
 
+// What a mirror would show in direction r: the sky gradient above the horizon, a dim ground
+// below, blurred towards their average as gloss goes to 0.
+vec3 environment(vec3 r, float gloss) {
+    vec3 ground = 0.35 * v_horizon;
+    vec3 sharp = mix(ground, sky_gradient(r, v_horizon, v_zenith), smoothstep(-0.05, 0.05, r.z));
+    vec3 blurred = 0.5 * (ground + 0.5 * (v_horizon + v_zenith));
+    return mix(blurred, sharp, gloss * gloss);
+}
+
 void main() {
     vec3 albedo = v_albedo;
-    if (u_checker) albedo *= mix(kCheckerDark, 1.0, checker(v_world.xy / kSquare));
+    if (v_checker > 0.5) albedo *= mix(kCheckerDark, 1.0, checker(v_world.xy / kSquare));
+    float shininess = v_material.x, specular = v_material.y, metallic = v_material.z;
+    float gloss = v_material.w;
 
     // Unit vectors at this point: surface normal n (flipped when we see the back of a plane),
     // towards the light l, towards the eye v, and the half-vector h between l and v.
@@ -45,18 +82,31 @@ void main() {
     vec3 v = normalize(u_camera_pos - v_world);
     vec3 h = normalize(l + v);
 
+    // Key light: Lambert diffuse (none on a metal) and a Blinn-Phong highlight, tinted by the
+    // base colour on a metal. (shininess + 8) / 40 keeps a small sharp highlight about as
+    // bright overall as a broad one.
+    float n_dot_l = max(dot(n, l), 0.0);
+    float visibility = 1.0;
+#ifdef SHADOWS
+    if (n_dot_l > 0.0) visibility = light_visibility();
+#endif
+    vec3 highlight_color = mix(vec3(1.0), albedo, metallic);
+    float highlight = pow(max(dot(n, h), 0.0), shininess) * min((shininess + 8.0) / 40.0, 6.0);
+    vec3 key = n_dot_l * ((1.0 - metallic) * albedo + specular * highlight * highlight_color);
+    key *= visibility * u_light_color;
+
     // Ambient: light from everywhere, a little stronger from the sky above than from the ground.
     float sky_facing = 0.5 + 0.5 * n.z;
-    vec3 ambient = u_ambient * mix(0.6, 1.0, sky_facing) * albedo;
-    // Diffuse (Lambert): proportional to the cosine between normal and light.
-    float n_dot_l = max(dot(n, l), 0.0);
-    vec3 diffuse = n_dot_l * albedo * u_light_color;
-    // Specular (Blinn): bright where the normal lines up with the half-vector; none on the side
-    // facing away from the light.
-    float highlight = n_dot_l > 0.0 ? pow(max(dot(n, h), 0.0), u_shininess) : 0.0;
-    vec3 specular = u_specular * highlight * u_light_color;
+    vec3 ambient = u_ambient * mix(0.6, 1.0, sky_facing) * (1.0 - 0.7 * metallic) * albedo;
 
-    vec3 color = ambient + diffuse + specular;
+    // Reflection of the surroundings, Fresnel-weighted: 4% head-on for a dielectric, the base
+    // colour for a metal, rising to 100% at grazing angles.
+    vec3 f0 = mix(vec3(0.04), albedo, metallic);
+    float c = 1.0 - max(dot(n, v), 0.0);
+    vec3 fresnel = f0 + (1.0 - f0) * (c * c * c * c * c) * gloss;
+    vec3 reflection = specular * fresnel * environment(reflect(-v, n), gloss);
+
+    vec3 color = key + ambient + reflection;
 
     // Fog: blend towards the sky seen in the same direction, more with (squared) distance.
     float d = length(u_camera_pos - v_world) / kFogDistance;

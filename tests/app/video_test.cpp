@@ -62,7 +62,18 @@ TEST(Video, InterruptFinishesAPlayableVideoAndSaysSo) {
         execl("/bin/sh", "sh", "-c", ("exec " + cmd).c_str(), static_cast<char*>(nullptr));
         _exit(98);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1000)); // some hundreds of frames
+    // Interrupt once encoded frames are reaching the (partial) file, however long start-up took
+    // on a busy machine: x264 holds a few frames back, so a non-empty file means frames drawn.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    auto encoding = [&dir] {
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+            if (e.path().filename().string().starts_with(".long.mp4") && e.file_size() > 0)
+                return true;
+        return false;
+    };
+    while (!encoding() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
     kill(pid, SIGINT);
     int status = 0;
     waitpid(pid, &status, 0);

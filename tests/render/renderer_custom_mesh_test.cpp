@@ -11,14 +11,15 @@
 namespace tumble::render {
 namespace {
 
-// Pixels whose colour is clearly the given primary (0 = red, 1 = green, 2 = blue).
+// Pixels whose colour is clearly the given primary (0 = red, 1 = green, 2 = blue): the sky
+// and grey ground never are, a lit (highlights and reflections included) coloured body is.
 int count_primary(const Image& img, int channel) {
     int n = 0;
     for (std::size_t i = 0; i < img.rgb.size(); i += 3) {
         const int c = img.rgb[i + std::size_t(channel)];
         const int o1 = img.rgb[i + std::size_t((channel + 1) % 3)];
         const int o2 = img.rgb[i + std::size_t((channel + 2) % 3)];
-        n += c > 90 && c > 2 * o1 && c > 2 * o2;
+        n += c > 90 && c > o1 + 60 && c > o2 + 60;
     }
     return n;
 }

@@ -1,0 +1,169 @@
+#include "render/draw_list.h"
+
+#include "render/camera.h"
+#include "render/renderer.h" // RenderError
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tumble::render {
+namespace {
+
+// Batches are drawn in rank order: solid bodies first, the ground last, so that the ground's
+// hidden pixels fail the depth test before they are shaded.
+int rank_of(MeshKind kind) {
+    return kind == MeshKind::Plane ? 1 : 0;
+}
+
+// The body-axis rods of an instance: unit cylinders stretched from the body's centre to past its
+// surface along each of its axes. Lengths follow the instance's extent along each axis.
+struct Rod {
+    glm::mat4 transform;
+    glm::vec3 color;
+};
+
+std::array<Rod, 3> axis_rods(const glm::mat4& t, glm::vec3 unit_half_extent) {
+    static const glm::vec3 kColors[3] = {{0.86f, 0.16f, 0.12f}, // x red
+                                         {0.20f, 0.70f, 0.22f}, // y green
+                                         {0.16f, 0.36f, 0.90f}};
+    glm::vec3 extent, axis[3];
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec3 column(t[k]);
+        const float scale = glm::length(column);
+        axis[k] = scale > 0.0f ? column / scale : glm::vec3(0.0f);
+        extent[k] = scale * unit_half_extent[k];
+    }
+    const float largest = std::max({extent.x, extent.y, extent.z});
+    const float radius = 0.04f * largest;
+    std::array<Rod, 3> rods;
+    for (int k = 0; k < 3; ++k) {
+        const float length = extent[k] + 0.5f * largest; // pokes out of the surface
+        // Rod frame: its z along axis k, its x and y along the other two body axes.
+        glm::mat4 m(1.0f);
+        m[0] = glm::vec4(axis[(k + 1) % 3] * radius, 0.0f);
+        m[1] = glm::vec4(axis[(k + 2) % 3] * radius, 0.0f);
+        m[2] = glm::vec4(axis[k] * (0.5f * length), 0.0f);
+        m[3] = glm::vec4(glm::vec3(t[3]) + axis[k] * (0.5f * length), 1.0f);
+        rods[std::size_t(k)] = {m, kColors[k]};
+    }
+    return rods;
+}
+
+float max_scale(const glm::mat4& t) {
+    return std::max(
+        {glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])), glm::length(glm::vec3(t[2]))});
+}
+
+// Radius of the circle a sphere or cylinder instance shows (0 for kinds without levels).
+float lod_radius(MeshKind kind, const glm::mat4& t) {
+    if (kind == MeshKind::Sphere) return max_scale(t);
+    if (kind == MeshKind::Cylinder)
+        return std::max(glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])));
+    return 0.0f;
+}
+
+const GpuMesh& mesh_at_detail(const MeshLibrary& lib, MeshKind kind, float radius_px, float error) {
+    if (kind == MeshKind::Sphere)
+        return lib.spheres[choose_level(MeshLibrary::kSphereLevels, radius_px, error)];
+    if (kind == MeshKind::Cylinder)
+        return lib.cylinders[choose_level(MeshLibrary::kCylinderLevels, radius_px, error)];
+    return kind == MeshKind::Box ? lib.box : lib.plane;
+}
+
+// Everything needed to place one drawable (a body, or one of its axis rods) in both lists.
+struct Drawable {
+    MeshKind kind;
+    const GpuMesh* custom; // for MeshKind::Custom
+    glm::mat4 transform;
+    glm::vec3 color;
+    Material material;
+};
+
+} // namespace
+
+MeshLibrary::MeshLibrary() {
+    for (int segments : kSphereLevels) spheres.emplace_back(make_sphere(segments, segments / 2));
+    for (int segments : kCylinderLevels) cylinders.emplace_back(make_cylinder(segments));
+    box = GpuMesh(make_box());
+    plane = GpuMesh(make_plane());
+}
+
+void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLibrary& lib,
+                      const std::vector<const GpuMesh*>& custom, DrawLists& out) {
+    out.camera.clear();
+    out.shadow.clear();
+    out.caster_bounds.clear();
+    out.casters.clear();
+    const Camera& cam = view.camera;
+    const Frustum frustum = Frustum::from_view_proj(s.view_proj);
+    // The part of the view that shadows are drawn in: the camera frustum cut at shadow_distance.
+    Camera near_cam = cam;
+    near_cam.z_far = std::min(cam.z_far, s.shadow_distance);
+    const float aspect = std::abs(s.view_proj[0][0]) > 0.0f
+                             ? std::abs(s.view_proj[1][1] / s.view_proj[0][0])
+                             : 1.0f; // recover width / height from the projection's scales
+    const Frustum shadow_region =
+        Frustum::from_view_proj(projection_matrix(near_cam, aspect) * view_matrix(near_cam));
+    const glm::vec3 light_dir = glm::normalize(view.light.direction);
+
+    auto place = [&](const Drawable& d) {
+        const GpuMesh* unit =
+            d.kind == MeshKind::Custom ? d.custom : &mesh_at_detail(lib, d.kind, 0, 1);
+        const glm::vec3 centre(d.transform[3]);
+        const float bound = unit->radius() * max_scale(d.transform);
+        const bool checker = d.kind == MeshKind::Plane;
+        const bool closed = d.kind != MeshKind::Plane && d.kind != MeshKind::Custom;
+        const InstanceData data = make_instance_data(d.transform, d.color, d.material, checker);
+        const float radius = lod_radius(d.kind, d.transform);
+        if (frustum.intersects_sphere(centre, bound)) {
+            const float px = projected_radius_px(radius, glm::length(centre - cam.position),
+                                                 cam.fov_y_deg, s.height);
+            const GpuMesh* mesh = d.kind == MeshKind::Custom
+                                      ? d.custom
+                                      : &mesh_at_detail(lib, d.kind, px, kCameraError);
+            out.camera.add(mesh, closed, rank_of(d.kind), data);
+        }
+        if (s.shadows && d.kind != MeshKind::Plane &&
+            shadow_region.intersects_swept_sphere(centre, bound, light_dir)) {
+            out.caster_bounds.emplace_back(centre, bound);
+            out.casters.push_back({data, d.custom, radius, d.kind, closed});
+        }
+    };
+
+    for (const Instance& inst : view.instances) {
+        const GpuMesh* mesh = nullptr;
+        if (inst.mesh == MeshKind::Custom) {
+            if (inst.mesh_id >= custom.size())
+                throw RenderError("instance uses custom mesh " + std::to_string(inst.mesh_id) +
+                                  " but the view has " + std::to_string(custom.size()));
+            mesh = custom[inst.mesh_id];
+        }
+        place({inst.mesh, mesh, inst.transform, inst.color, inst.material});
+        if (inst.axes) {
+            const glm::vec3 half = mesh ? mesh->half_extent() : glm::vec3(1.0f);
+            for (const Rod& rod : axis_rods(inst.transform, half))
+                place(
+                    {MeshKind::Cylinder, nullptr, rod.transform, rod.color, Material{0.4f, 0.4f}});
+        }
+    }
+    out.camera.finish();
+    if (!s.shadows) {
+        out.light = {};
+        out.shadow.finish();
+        return;
+    }
+    out.light = fit_light_frame(light_dir, out.caster_bounds, s.shadow_map_size);
+    for (const PendingCaster& c : out.casters) {
+        const float texels = c.lod_radius / out.light.texel_size;
+        const GpuMesh* mesh = c.kind == MeshKind::Custom
+                                  ? c.custom
+                                  : &mesh_at_detail(lib, c.kind, texels, kShadowError);
+        out.shadow.add(mesh, c.closed, 0, c.data);
+    }
+    out.shadow.finish();
+}
+
+} // namespace tumble::render

@@ -1,0 +1,104 @@
+#include "render/shadow_map.h"
+
+#include "render/renderer.h" // RenderError
+
+#include <GL/glext.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tumble::render {
+
+LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> casters, int map_size,
+                           float max_half_size) {
+    LightFrame out;
+    if (casters.empty() || map_size <= 0) return out;
+    // Light view: looking along the light from the origin; any up not parallel to it will do.
+    const glm::vec3 d = glm::normalize(direction);
+    const glm::vec3 up = std::abs(d.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), d, up);
+
+    // Bounds of the casters in light view space (the light looks down -z).
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec4& c : casters) {
+        const glm::vec3 p = glm::vec3(view * glm::vec4(glm::vec3(c), 1.0f));
+        lo = glm::min(lo, p - c.w);
+        hi = glm::max(hi, p + c.w);
+    }
+    // Square footprint, half size rounded up to a power of 2^(1/4): a few sizes only, so the
+    // texel grid (and with it every shadow edge) stays put while bodies move about inside.
+    const float raw_half =
+        std::clamp(0.5f * std::max(hi.x - lo.x, hi.y - lo.y), 0.05f, max_half_size);
+    const float half = std::exp2(std::ceil(4.0f * std::log2(raw_half * 1.02f)) / 4.0f);
+    const float texel = 2.0f * half / float(map_size);
+    // Centre snapped to whole texels: moving the frustum by a fraction of a texel would move every
+    // shadow edge's sampling pattern with it.
+    glm::vec2 centre = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
+    centre = glm::floor(centre / texel + 0.5f) * texel;
+    // Depth: from just in front of the nearest caster to just behind the farthest. Receivers
+    // beyond the far plane compare as "far" (the reference depth clamps to 1) and are shadowed
+    // wherever a caster covers them; receivers nearer than the near plane are in front of every
+    // caster and lit.
+    const float margin = 0.05f * (hi.z - lo.z) + 0.01f;
+    const float z_near = -hi.z - margin, z_far = -lo.z + margin;
+    const glm::mat4 proj = glm::ortho(centre.x - half, centre.x + half, centre.y - half,
+                                      centre.y + half, z_near, z_far);
+    out.view_proj = proj * view;
+    out.texel_size = texel;
+    out.empty = false;
+    return out;
+}
+
+ShadowMap::ShadowMap(int size) : size_(size) {
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT,
+                 GL_UNSIGNED_INT, nullptr);
+    // Linear filtering of a depth comparison: the GL compares the 4 nearest texels and blends the
+    // results, a 2x2 percentage-closer filter in every lookup.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    // Outside the map there is no caster: a border at the far depth reads as lit.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture_, 0);
+    glDrawBuffer(GL_NONE); // depth only
+    glReadBuffer(GL_NONE);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        glDeleteFramebuffers(1, &fbo_);
+        glDeleteTextures(1, &texture_);
+        throw RenderError("shadow map " + std::to_string(size) +
+                          " is incomplete (glCheckFramebufferStatus = " + std::to_string(status) +
+                          ")");
+    }
+}
+
+ShadowMap::~ShadowMap() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+void ShadowMap::begin_pass() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, size_, size_);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+void ShadowMap::bind_texture(GLenum unit) const {
+    glActiveTexture(unit);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+}
+
+} // namespace tumble::render

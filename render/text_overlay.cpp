@@ -1,0 +1,141 @@
+#include "render/text_overlay.h"
+
+#include "render/assets.h"
+#include "render/renderer.h" // RenderError
+
+#include <GL/glext.h>
+#include <stb_truetype.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace tumble::render {
+namespace {
+
+constexpr const char* kFont = "DejaVuSansMono.ttf";
+constexpr int kFirstChar = 32, kCharCount = 95; // printable ASCII
+
+const float kTextColor[4] = {1.0f, 1.0f, 1.0f, 0.95f};
+const float kPanelColor[4] = {0.05f, 0.06f, 0.08f, 0.55f};
+
+} // namespace
+
+TextOverlay::TextOverlay(int image_height)
+    : program_(shader_asset("text.vert"), shader_asset("text.frag")) {
+    const std::string_view font = assets::find(kFont);
+    if (font.empty()) throw RenderError(std::string("font ") + kFont + " is not embedded");
+    const auto* data = reinterpret_cast<const unsigned char*>(font.data());
+    pixel_height_ = std::max(11.0f, std::round(float(image_height) / 32.0f));
+    atlas_width_ = pixel_height_ > 24 ? 1024 : 512;
+    atlas_height_ = pixel_height_ > 48 ? 1024 : 512;
+    std::vector<unsigned char> atlas(std::size_t(atlas_width_) * std::size_t(atlas_height_));
+    stbtt_bakedchar baked[kCharCount];
+    if (stbtt_BakeFontBitmap(data, 0, pixel_height_, atlas.data(), atlas_width_, atlas_height_,
+                             kFirstChar, kCharCount, baked) <= 0)
+        throw RenderError("the overlay font does not fit its atlas at " +
+                          std::to_string(pixel_height_) + " pixels");
+    for (int i = 0; i < kCharCount; ++i) {
+        const stbtt_bakedchar& b = baked[i];
+        glyphs_[std::size_t(i)] = {float(b.x0), float(b.y0), float(b.x1), float(b.y1),
+                                   b.xoff,      b.yoff,      b.xadvance};
+    }
+    stbtt_fontinfo info;
+    if (!stbtt_InitFont(&info, data, stbtt_GetFontOffsetForIndex(data, 0)))
+        throw RenderError(std::string("cannot read the font ") + kFont);
+    int ascent = 0, descent = 0, gap = 0;
+    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
+    const float scale = stbtt_ScaleForPixelHeight(&info, pixel_height_);
+    ascent_ = std::round(float(ascent) * scale);
+    line_height_ = std::round(float(ascent - descent + gap) * scale);
+
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas_width_, atlas_height_, 0, GL_RED, GL_UNSIGNED_BYTE,
+                 atlas.data());
+    // Glyph quads sit on whole pixels and map texel for texel: nearest is exact.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+
+    glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vbo_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    const auto stride = GLsizei(8 * sizeof(float));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(2 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(4 * sizeof(float)));
+    glBindVertexArray(0);
+    viewport_uniform_ = program_.uniform("u_viewport");
+    glUseProgram(program_.id());
+    glUniform1i(program_.uniform("u_atlas"), 0);
+}
+
+TextOverlay::~TextOverlay() {
+    if (vbo_) glDeleteBuffers(1, &vbo_);
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+void TextOverlay::quad(float x0, float y0, float x1, float y1, float u0, float v0, float u1,
+                       float v1, const float* c) {
+    const float corners[6][4] = {{x0, y0, u0, v0}, {x1, y0, u1, v0}, {x1, y1, u1, v1},
+                                 {x0, y0, u0, v0}, {x1, y1, u1, v1}, {x0, y1, u0, v1}};
+    for (const auto& k : corners)
+        vertices_.insert(vertices_.end(), {k[0], k[1], k[2], k[3], c[0], c[1], c[2], c[3]});
+}
+
+void TextOverlay::draw(const std::vector<std::string>& lines, int width, int height) {
+    if (lines.empty()) return;
+    vertices_.clear();
+    const float margin = std::round(0.8f * pixel_height_);
+    const float pad = std::round(0.5f * pixel_height_);
+    const float advance = glyphs_[0].advance; // monospaced: every glyph advances the same
+    std::size_t columns = 0;
+    for (const std::string& line : lines) columns = std::max(columns, line.size());
+    // The panel first, then the glyphs over it (one draw call: order within it is kept).
+    quad(margin, margin, margin + 2 * pad + std::ceil(advance * float(columns)),
+         margin + 2 * pad + line_height_ * float(lines.size()), -1, -1, -1, -1, kPanelColor);
+    const float inv_w = 1.0f / float(atlas_width_), inv_h = 1.0f / float(atlas_height_);
+    float baseline = margin + pad + ascent_;
+    for (const std::string& line : lines) {
+        float x = margin + pad;
+        for (char ch : line) {
+            int index = static_cast<unsigned char>(ch) - kFirstChar;
+            if (index < 0 || index >= kCharCount) index = '?' - kFirstChar;
+            const Glyph& g = glyphs_[std::size_t(index)];
+            if (g.x1 > g.x0) { // the space has no pixels
+                const float gx = std::round(x + g.xoff), gy = std::round(baseline + g.yoff);
+                quad(gx, gy, gx + (g.x1 - g.x0), gy + (g.y1 - g.y0), g.x0 * inv_w, g.y0 * inv_h,
+                     g.x1 * inv_w, g.y1 * inv_h, kTextColor);
+            }
+            x += g.advance;
+        }
+        baseline += line_height_;
+    }
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(program_.id());
+    glUniform2f(viewport_uniform_, float(width), float(height));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size() / 8));
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+}
+
+} // namespace tumble::render

@@ -1,0 +1,47 @@
+#pragma once
+// The text overlay: lines of ASCII text in the top-left corner of the image, white on a
+// translucent dark panel, drawn with DejaVu Sans Mono (assets/fonts, embedded) rasterised by
+// stb_truetype into a glyph atlas once, when the overlay is made. Monospaced, so numbers that
+// change every frame do not make the text jiggle.
+#include "render/shader.h"
+
+#include <GL/gl.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tumble::render {
+
+class TextOverlay {
+  public:
+    // Bakes the font at a size that suits an image `image_height` pixels tall (about 1/32 of it,
+    // at least 11 pixels). Needs a current GL context; throws RenderError if the font is missing.
+    explicit TextOverlay(int image_height);
+    ~TextOverlay();
+    TextOverlay(const TextOverlay&) = delete;
+    TextOverlay& operator=(const TextOverlay&) = delete;
+
+    // Draws over whatever is in the bound framebuffer (blending on, depth test off).
+    void draw(const std::vector<std::string>& lines, int width, int height);
+    float pixel_height() const { return pixel_height_; }
+
+  private:
+    struct Glyph {
+        float x0, y0, x1, y1; // atlas rectangle, pixels
+        float xoff, yoff, advance;
+    };
+    void quad(float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1,
+              const float* rgba);
+
+    float pixel_height_ = 0;
+    int atlas_width_ = 0, atlas_height_ = 0;
+    std::array<Glyph, 95> glyphs_{}; // ' ' .. '~'
+    float ascent_ = 0, line_height_ = 0;
+    ShaderProgram program_;
+    GLint viewport_uniform_ = -1;
+    GLuint texture_ = 0, vao_ = 0, vbo_ = 0;
+    std::vector<float> vertices_; // 8 floats per vertex: x, y, u, v, r, g, b, a
+};
+
+} // namespace tumble::render

@@ -1,0 +1,126 @@
+// The CPU side of instanced drawing: frustum culling, level-of-detail choice, batching, and the
+// fitted shadow frustum. No GL needed.
+#include "render/batches.h"
+#include "render/camera.h"
+#include "render/shadow_map.h"
+
+#include "measured.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tumble::render {
+namespace {
+
+Frustum camera_frustum() {
+    Camera c;
+    c.position = {0, -10, 0};
+    c.target = {0, 0, 0};
+    c.z_far = 100.0f;
+    return Frustum::from_view_proj(projection_matrix(c, 16.0f / 9.0f) * view_matrix(c));
+}
+
+TEST(Culling, SpheresInsideTouchingAndOutsideTheFrustum) {
+    const Frustum f = camera_frustum();
+    EXPECT_TRUE(f.intersects_sphere({0, 0, 0}, 0.1f));       // at the target
+    EXPECT_FALSE(f.intersects_sphere({0, -20, 0}, 1.0f));    // behind the camera
+    EXPECT_FALSE(f.intersects_sphere({0, 200, 0}, 1.0f));    // beyond the far plane
+    EXPECT_FALSE(f.intersects_sphere({30, 0, 0}, 1.0f));     // far to the right
+    EXPECT_TRUE(f.intersects_sphere({30, 0, 0}, 30.0f));     // ... but big enough to reach in
+    EXPECT_FALSE(f.intersects_sphere({0, 0, 30}, 1.0f));     // far above
+    EXPECT_TRUE(f.intersects_sphere({0, -10.04f, 0}, 0.1f)); // straddling the near plane
+}
+
+TEST(Culling, ShadowCastersOutsideCountWhenTheirShadowCanFallInside) {
+    const Frustum f = camera_frustum();
+    const glm::vec3 down{0, 0, -1};
+    EXPECT_TRUE(f.intersects_swept_sphere({0, 0, 30}, 1.0f, down));   // above, light from above
+    EXPECT_FALSE(f.intersects_swept_sphere({0, 0, 30}, 1.0f, -down)); // light from below
+    EXPECT_FALSE(f.intersects_swept_sphere({0, 0, -30}, 1.0f, down)); // below, shadow goes down
+    EXPECT_FALSE(f.intersects_swept_sphere({60, 0, 0}, 1.0f, down));  // far right: falls outside
+}
+
+TEST(LevelOfDetail, SegmentsKeepTheOutlineWithinTheError) {
+    for (float r : {2.0f, 10.0f, 50.0f, 300.0f}) {
+        const int n = segments_for(r, 0.3f);
+        const float error = r * (1.0f - std::cos(3.14159265f / float(n)));
+        TUMBLE_MEASURED(error, 0.3f);
+        EXPECT_LE(error, 0.3f + 1e-5f) << r;
+        // and not wastefully many: one segment fewer would exceed it
+        EXPECT_GT(r * (1.0f - std::cos(3.14159265f / float(n - 1))), 0.3f) << r;
+    }
+    const std::array<int, 4> levels{12, 24, 48, 64};
+    EXPECT_EQ(choose_level(levels, 1.0f, 0.3f), 0u);    // a few pixels: the coarsest
+    EXPECT_EQ(choose_level(levels, 30.0f, 0.3f), 1u);   // needs 23
+    EXPECT_EQ(choose_level(levels, 5000.0f, 0.3f), 3u); // more than any: the finest
+}
+
+TEST(LevelOfDetail, ProjectedRadiusFollowsDistanceAndFieldOfView) {
+    // Unit sphere 10 m away, 90 degree field of view, 720 rows: 1/10 of half the height.
+    EXPECT_NEAR(projected_radius_px(1.0f, 10.0f, 90.0f, 720), 36.0f, 1e-3f);
+    EXPECT_NEAR(projected_radius_px(1.0f, 20.0f, 90.0f, 720), 18.0f, 1e-3f);
+}
+
+TEST(Batches, InstancesAreGroupedByMeshInRankOrderAndReuseStorage) {
+    GpuMesh* a = reinterpret_cast<GpuMesh*>(0x10); // keys only; never dereferenced here
+    GpuMesh* b = reinterpret_cast<GpuMesh*>(0x20);
+    BatchList list;
+    for (int frame = 0; frame < 2; ++frame) {
+        list.clear();
+        const InstanceData d = make_instance_data(glm::mat4(1.0f), {1, 0, 0}, {}, false);
+        list.add(b, false, 1, d); // the ground: rank 1, drawn last
+        list.add(a, true, 0, d);
+        list.add(a, true, 0, d);
+        list.add(a, false, 0, d); // same mesh, two-sided: its own batch
+        list.finish();
+        ASSERT_EQ(list.batches().size(), 3u);
+        EXPECT_EQ(list.batches()[0].mesh, a);
+        EXPECT_EQ(list.batches()[0].count, 2u);
+        EXPECT_EQ(list.batches()[1].mesh, a);
+        EXPECT_FALSE(list.batches()[1].cull_back);
+        EXPECT_EQ(list.batches()[2].mesh, b);
+        EXPECT_EQ(list.batches()[2].first, 3u);
+        EXPECT_EQ(list.data().size(), 4u);
+    }
+}
+
+TEST(Batches, InstanceDataCarriesNormalMatrixAndMaterial) {
+    const glm::mat4 squash = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, 0.25f));
+    const InstanceData d = make_instance_data(squash, {0.2f, 0.4f, 0.6f}, {0.0f, 0.7f, 1.0f}, true);
+    EXPECT_FLOAT_EQ(d.normal_matrix[2][2], 4.0f); // normals stretch where the shape squashes
+    EXPECT_EQ(d.color, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    EXPECT_FLOAT_EQ(d.material.x, 1025.0f); // roughness 0: sharpest highlight
+    EXPECT_FLOAT_EQ(d.material.y, 0.7f);
+    EXPECT_FLOAT_EQ(d.material.z, 1.0f);
+    EXPECT_FLOAT_EQ(shininess_from_roughness(1.0f), 2.0f);
+}
+
+// Every caster lands inside the fitted light frustum, and small moves do not change its size.
+TEST(ShadowFit, CastersAreInsideAndTheFrustumIsStable) {
+    const glm::vec3 light{-0.5f, 0.4f, -1.0f};
+    std::vector<glm::vec4> casters{{0, 0, 1, 0.3f}, {2, 1, 0.5f, 0.2f}, {-1, 2, 3, 0.5f}};
+    const LightFrame f = fit_light_frame(light, casters, 1024);
+    ASSERT_FALSE(f.empty);
+    for (const glm::vec4& c : casters) {
+        for (int axis = 0; axis < 3; ++axis)
+            for (float sign : {-1.0f, 1.0f}) {
+                glm::vec3 p(c);
+                p[axis] += sign * c.w;
+                const glm::vec4 clip = f.view_proj * glm::vec4(p, 1.0f);
+                for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(clip[k]), 1.0f) << k;
+            }
+    }
+    casters[0].x += 0.001f; // a small move: same size, centre moves by whole texels only
+    const LightFrame g = fit_light_frame(light, casters, 1024);
+    EXPECT_FLOAT_EQ(g.texel_size, f.texel_size);
+    const glm::vec4 o1 = f.view_proj * glm::vec4(0, 0, 0, 1),
+                    o2 = g.view_proj * glm::vec4(0, 0, 0, 1);
+    const float shift_texels = (o2.x - o1.x) * 0.5f * 1024.0f;
+    EXPECT_NEAR(shift_texels, std::round(shift_texels), 1e-2f);
+    EXPECT_TRUE(fit_light_frame(light, {}, 1024).empty);
+}
+
+} // namespace
+} // namespace tumble::render
