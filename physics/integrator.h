@@ -11,7 +11,14 @@
 namespace tumble::physics {
 
 enum class Integrator : std::uint8_t {
+    Euler,
+    EulerMomentum,
+    SymplecticEuler,
+    ImplicitGyro,
     Rk4,
+    Splitting,
+    Midpoint,
+    Splitting4,
 };
 
 struct IntegratorInfo {

@@ -7,7 +7,11 @@
 // Order: 4 on the translation (exact to round-off for constant force: x(t) is a quadratic). On the
 // rotation the stages add quaternion increments in R^4 and the result is projected back onto the
 // unit sphere; Buss (2000) warns such "naive" Runge-Kutta on sphere-valued functions can lose
-// order, so the order is measured in the tests, not assumed.
+// order, so the order is measured, not assumed: 3.89 and 3.94 on the intermediate-axis flip
+// (h = 1/60, 1/120, 1/240 s; tests/physics/integrator_order_test.cpp). It is fourth order: the
+// stage derivative 1/2 (0, w) (x) q is linear in q, so the stages solve a smooth ODE in R^4 whose
+// exact solution stays on the sphere, and the final projection moves an O(h^5)-accurate point by
+// O(h^5). Buss's loss of order concerns schemes whose stages leave that ODE.
 // Conserves: nothing exactly. Energy and world angular momentum drift as O(h^4) per unit time.
 // Known failure: explicit, so for h |w| beyond about 2.8 (the RK4 stability boundary on the
 // imaginary axis) the rotation blows up; the divergence check then stops the run.

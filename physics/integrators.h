@@ -7,6 +7,13 @@
 
 namespace tumble::physics {
 
+void integrate_euler(const Model& model, State& state, double h);
+void integrate_euler_momentum(const Model& model, State& state, double h);
+void integrate_symplectic_euler(const Model& model, State& state, double h);
+void integrate_implicit_gyro(const Model& model, State& state, double h);
 void integrate_rk4(const Model& model, State& state, double h);
+void integrate_splitting(const Model& model, State& state, double h);
+void integrate_midpoint(const Model& model, State& state, double h);
+void integrate_splitting4(const Model& model, State& state, double h);
 
 } // namespace tumble::physics

@@ -52,6 +52,9 @@ struct Model {
     std::vector<int> dynamic_bodies;
 
     Passes passes;
+    // Every pass on and no per-body shortcut, whatever the scene needs (force_all_passes() in
+    // passes.h): the full pipeline that benchmarks and tests compare the assembled step with.
+    bool all_passes = false;
 
     int body_count() const { return static_cast<int>(shape.size()); }
     bool is_dynamic(int body) const { return motion[body] == Motion::Dynamic; }

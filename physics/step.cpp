@@ -23,8 +23,29 @@ void check_finite(const Model& m, const State& s) {
 void step(const Model& m, State& s) {
     const double h = m.dt;
     switch (m.integrator) {
+    case Integrator::Euler:
+        integrate_euler(m, s, h);
+        break;
+    case Integrator::EulerMomentum:
+        integrate_euler_momentum(m, s, h);
+        break;
+    case Integrator::SymplecticEuler:
+        integrate_symplectic_euler(m, s, h);
+        break;
+    case Integrator::ImplicitGyro:
+        integrate_implicit_gyro(m, s, h);
+        break;
     case Integrator::Rk4:
         integrate_rk4(m, s, h);
+        break;
+    case Integrator::Splitting:
+        integrate_splitting(m, s, h);
+        break;
+    case Integrator::Midpoint:
+        integrate_midpoint(m, s, h);
+        break;
+    case Integrator::Splitting4:
+        integrate_splitting4(m, s, h);
         break;
     }
     ++s.step;
