@@ -1,5 +1,6 @@
 #include "app/body_loader.h"
 
+#include "app/materials.h"
 #include "app/scene_values.h"
 
 namespace tumble::app {
@@ -109,6 +110,7 @@ void read_body(JsonReader r, int index, physics::BodyDef& b, BodyLook& look) {
     if (auto t = r.optional("torque"))
         b.applied_torque = read_vec3(*t, "a torque [x, y, z] in N m");
     if (auto c = r.optional("color")) look.color = read_color(*c);
+    if (auto m = r.optional("material")) look.material = read_material(*m); // app/materials.h
     r.finish();
 }
 

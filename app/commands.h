@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tumble::app {
 
@@ -28,6 +29,20 @@ struct RenderCommand {
     std::optional<std::int64_t> frame; // render only this frame (to a still .png)
     int crf = 18;
     std::string preset = "veryfast";
+    // Picture switches; unset ones keep the scene's render settings.
+    bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
+    std::optional<bool> shadows, antialiasing, overlay, axes;
+    bool stats = false; // print each pipeline stage's rate
+};
+
+// `tumble bench-render`: frames per second per stage and end to end, medians of repeated runs,
+// against a null sink measured in the same run (app/bench_command.cpp).
+struct BenchRenderCommand {
+    std::vector<std::string> cases; // names from the built-in list; empty: all
+    int repeats = 3;
+    std::string csv;     // append the table here
+    std::string machine; // label for the CSV (default: the host name)
+    bool quick = false;  // fewer frames per case
 };
 
 struct SimulateCommand {
@@ -50,6 +65,7 @@ struct DiffCommand {
 };
 
 int run_render(const RenderCommand& cmd);
+int run_bench_render(const BenchRenderCommand& cmd);
 int run_goldens(const GoldensCommand& cmd);
 int run_diff(const DiffCommand& cmd);
 int run_simulate(const SimulateCommand& cmd);

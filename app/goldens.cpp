@@ -32,16 +32,17 @@ render::CompareOptions read_compare(JsonReader r, render::CompareOptions c) {
     return c;
 }
 
-std::string image_name(const std::string& scene, std::int64_t frame) {
+std::string image_name(const std::string& scene, std::int64_t frame, bool overlay) {
     char digits[32];
     std::snprintf(digits, sizeof digits, "%04lld", static_cast<long long>(frame));
-    return std::filesystem::path(scene).stem().string() + "_" + digits + ".png";
+    return std::filesystem::path(scene).stem().string() + "_" + digits +
+           (overlay ? "_overlay" : "") + ".png";
 }
 
 } // namespace
 
 std::string GoldenEntry::label() const {
-    return scene + " frame " + std::to_string(frame);
+    return scene + " frame " + std::to_string(frame) + (overlay ? " with overlay" : "");
 }
 
 GoldenManifest load_golden_manifest(const std::filesystem::path& path) {
@@ -62,9 +63,10 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& path) {
         g.frame = e.field("frame").integer(0, 1 << 30, "a frame index");
         if (auto w = e.optional("width")) g.width = w->integer(16, 7680, "an image width");
         if (auto h = e.optional("height")) g.height = h->integer(16, 4320, "an image height");
+        if (auto o = e.optional("overlay")) g.overlay = o->boolean();
         g.compare = defaults;
         if (auto c = e.optional("compare")) g.compare = read_compare(*c, defaults);
-        g.image = path.parent_path() / image_name(g.scene, g.frame);
+        g.image = path.parent_path() / image_name(g.scene, g.frame, g.overlay);
         e.finish();
         m.entries.push_back(g);
     }

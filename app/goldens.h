@@ -4,8 +4,11 @@
 //   {"gl_renderer": "...", "gl_version": "...",
 //    "compare": {"tolerance": 2, "perceptual_threshold": 0.05, "max_different": 20},
 //    "images": [{"scene": "default", "frame": 0, "width": 320, "height": 180}, ...]}
-// Each image lives beside the manifest as <scene>_<frame, 4 digits>.png. An entry may carry its
-// own "compare" object, overriding the defaults field by field.
+// Each image lives beside the manifest as <scene>_<frame, 4 digits>.png (..._overlay.png with the
+// text overlay). An entry may carry its own "compare" object, overriding the defaults field by
+// field, and "overlay": true to draw the scene's text overlay (off otherwise: its numbers move
+// with the last digit of the physics, which is not what a golden image is for). Every other
+// picture setting (shadows, anti-aliasing, camera, axes) is the scene's own.
 #include "render/image_compare.h"
 
 #include <cstdint>
@@ -20,6 +23,7 @@ struct GoldenEntry {
     std::int64_t frame = 0;
     int width = 320;
     int height = 180;
+    bool overlay = false;
     render::CompareOptions compare;
     std::filesystem::path image; // the golden PNG
     std::string label() const;   // "<scene> frame <k>"

@@ -8,6 +8,7 @@
 //           differs from the one recorded in the manifest unless --force.
 #include "app/commands.h"
 #include "app/goldens.h"
+#include "app/render_run.h"
 #include "app/scene.h"
 #include "app/scene_error.h"
 #include "app/scene_options.h"
@@ -15,6 +16,7 @@
 #include "render/png_io.h"
 #include "render/renderer.h"
 
+#include <array>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -22,24 +24,27 @@
 namespace tumble::app {
 namespace {
 
-// One renderer per image size, created on first use.
+// One renderer per set of options (size, samples, shadows), created on first use.
 class RendererCache {
   public:
-    render::Renderer& get(int w, int h) {
-        auto& r = cache_[{w, h}];
-        if (!r) r = std::make_unique<render::Renderer>(render::RenderOptions{w, h});
+    render::Renderer& get(const render::RenderOptions& o) {
+        auto& r = cache_[{o.width, o.height, o.samples, o.shadows ? 1 : 0}];
+        if (!r) r = std::make_unique<render::Renderer>(o);
         return *r;
     }
-    render::Renderer& any() { return get(16, 16); }
+    render::Renderer& any() { return get({16, 16}); }
 
   private:
-    std::map<std::pair<int, int>, std::unique_ptr<render::Renderer>> cache_;
+    std::map<std::array<int, 4>, std::unique_ptr<render::Renderer>> cache_;
 };
 
 render::Image render_entry(const GoldenManifest& m, const GoldenEntry& g, RendererCache& cache) {
     const auto local = m.path.parent_path() / g.scene;
     Scene scene = load_scene_argument(std::filesystem::exists(local) ? local.string() : g.scene);
-    return render_still(scene, g.frame, cache.get(g.width, g.height));
+    scene.render.width = g.width;
+    scene.render.height = g.height;
+    scene.render.overlay = g.overlay;
+    return render_still(scene, g.frame, cache.get(render_options(scene.render)));
 }
 
 int check(const GoldenManifest& m, const std::filesystem::path& artifacts, RendererCache& cache) {

@@ -40,6 +40,32 @@ int main(int argc, char** argv) {
     r->add_option("--crf", render.crf, "H.264 quality, 0 (lossless) .. 51 (worst)")
         ->check(CLI::Range(0, 51));
     r->add_option("--preset", render.preset, "libx264 preset (ultrafast .. veryslow)");
+    r->add_flag("--preview", render.preview,
+                "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
+    // On/off pairs that override the scene's render settings only when given.
+    auto on_off = [r](const char* name, std::optional<bool>& value, const std::string& what) {
+        r->add_flag_callback(
+            std::string("--") + name, [&value] { value = true; }, what + " (default: the scene's)");
+        r->add_flag_callback(
+            std::string("--no-") + name, [&value] { value = false; },
+            std::string("turn --") + name + " off");
+    };
+    on_off("shadows", render.shadows, "shadows from the key light");
+    on_off("aa", render.antialiasing, "4x multisample anti-aliasing");
+    on_off("overlay", render.overlay,
+           "time, step, integrator, energy and momentum in the top-left corner");
+    on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
+    r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
+
+    BenchRenderCommand bench;
+    CLI::App* b = app.add_subcommand(
+        "bench-render", "frame rates per pipeline stage and end to end, against a null sink");
+    b->add_option("cases", bench.cases, "cases to run (default: all; see bench/README.md)");
+    b->add_option("--repeats", bench.repeats, "runs per case; the table shows medians (default 3)")
+        ->check(CLI::PositiveNumber);
+    b->add_option("--csv", bench.csv, "append the results to this CSV file");
+    b->add_option("--machine", bench.machine, "machine label in the CSV (default: host name)");
+    b->add_flag("--quick", bench.quick, "fewer frames per case");
 
     SimulateCommand simulate;
     CLI::App* s = app.add_subcommand(
@@ -99,6 +125,7 @@ int main(int argc, char** argv) {
     tumble::render::quiet_video_logs();
     if (version) return run_version();
     if (r->parsed()) return run_render(render);
+    if (b->parsed()) return run_bench_render(bench);
     if (s->parsed()) return run_simulate(simulate);
     if (e->parsed()) return run_explain(explain);
     if (app.got_subcommand("scenes")) return run_list_scenes();

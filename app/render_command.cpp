@@ -1,17 +1,17 @@
 // `tumble render`: step the scene and draw frame k at exactly t = k / fps into a video, a PNG
 // sequence or a single still.
+// The frames go through the pipeline of app/pipeline.h (physics, render and output on their own
+// threads); --stats prints each stage's rate.
 #include "app/commands.h"
 #include "app/interrupt.h"
-#include "app/progress.h"
+#include "app/render_run.h"
 #include "app/scene_error.h"
 #include "app/scene_options.h"
 #include "app/simulation.h"
 #include "app/timeline.h"
-#include "app/view_builder.h"
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 #include "render/frame_sink.h"
-#include "render/renderer.h"
 
 #include <chrono>
 #include <cmath>
@@ -24,53 +24,6 @@ namespace {
 std::string default_output(const Scene& scene) {
     std::string stem = std::filesystem::path(scene.source).stem().string();
     return (stem.empty() ? "tumble" : stem) + ".mp4";
-}
-
-void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
-    if (cmd.width) scene.render.width = *cmd.width;
-    if (cmd.height) scene.render.height = *cmd.height;
-    if (cmd.fps) scene.render.fps = *cmd.fps;
-    if (scene.render.width < 16 || scene.render.height < 16)
-        throw SceneError("--width/--height",
-                         std::to_string(scene.render.width) + "x" +
-                             std::to_string(scene.render.height),
-                         "expected at least 16x16 pixels");
-    if (scene.render.fps < 1)
-        throw SceneError("--fps", std::to_string(scene.render.fps), "expected at least 1");
-}
-
-struct RunResult {
-    std::int64_t frames = 0;
-    bool interrupted = false;
-};
-
-// The frame loop: draw frame k, hand it to the sink, then step to frame k + 1.
-RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
-                        render::Renderer& renderer, render::FrameSink& sink,
-                        std::optional<std::int64_t> only_frame, bool quiet) {
-    render::SceneView view;
-    render::Image image;
-    RunResult out;
-    const std::int64_t first = only_frame.value_or(0);
-    const std::int64_t last = only_frame ? *only_frame : tl.frames - 1;
-    Progress progress("rendering", last - first + 1, quiet);
-    for (std::int64_t k = 0; k <= last; ++k) {
-        if (InterruptGuard::requested()) {
-            out.interrupted = true;
-            break;
-        }
-        if (k >= first) {
-            build_view(scene, sim.model, sim.state, view);
-            renderer.draw(view, image);
-            sink.write(image);
-            ++out.frames;
-            progress.update(k - first + 1);
-        }
-        if (k < last)
-            for (int s = 0; s < tl.steps_per_frame; ++s) physics::step(sim.model, sim.state);
-    }
-    progress.finish();
-    return out;
 }
 
 void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline& tl,
@@ -112,7 +65,6 @@ int run_render(const RenderCommand& cmd) {
         return report_error("--frame renders one still: the output must end in .png, got " + output,
                             kBadInput);
     try {
-        render::Renderer renderer({scene.render.width, scene.render.height});
         const auto parent = std::filesystem::path(output).parent_path();
         if (!parent.empty() && output.find('%') == std::string::npos)
             std::filesystem::create_directories(parent);
@@ -126,8 +78,8 @@ int run_render(const RenderCommand& cmd) {
         InterruptGuard guard;
         const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
         const auto t0 = std::chrono::steady_clock::now();
-        const RunResult r =
-            render_frames(scene, tl, sim, renderer, *sink, cmd.frame, cmd.common.quiet);
+        const RunResult r = render_frames(scene, tl, sim, *sink, cmd.frame.value_or(0),
+                                          cmd.frame.value_or(tl.frames - 1), cmd.common.quiet);
         if (r.frames > 0)
             sink->finish();
         else
@@ -135,6 +87,7 @@ int run_render(const RenderCommand& cmd) {
         const double wall =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         print_summary(cmd, scene, tl, sim, d0, r, *sink, wall);
+        if (cmd.stats) std::fprintf(stderr, "%s", describe_stats(r.stats).c_str());
         if (r.interrupted) {
             std::fprintf(
                 stderr,

@@ -1,27 +1,34 @@
 #pragma once
 // A scene as loaded from a file: the physics description (world + bodies), and how to draw it.
 // The format is documented field by field in docs/scene-format.md.
+#include "app/camera_rig.h"
 #include "physics/build.h"
 #include "render/scene_view.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace tumble::app {
 
 struct BodyLook {
-    std::string name;                  // from the scene, or "body <i>"
-    glm::vec3 color{0.8f, 0.8f, 0.8f}; // sRGB
-    float plane_extent = 20.0f;        // drawn side length of a plane, m
+    std::string name;                         // from the scene, or "body <i>"
+    glm::vec3 color{0.8f, 0.8f, 0.8f};        // sRGB
+    float plane_extent = 20.0f;               // drawn side length of a plane, m
+    std::optional<render::Material> material; // the scene's; else app/materials.h's default
 };
 
 struct RenderSettings {
     int width = 1280;
     int height = 720;
     int fps = 60;
-    render::Camera camera;
+    CameraRig camera; // fixed, orbiting, following a body or on a path (app/camera_rig.h)
     render::Light light;
     glm::vec3 background{0.62f, 0.72f, 0.85f};
+    bool shadows = true;      // shadow map from the key light
+    bool antialiasing = true; // 4x multisampling
+    bool overlay = false;     // time, step, integrator, energy, momentum in the top-left corner
+    bool axes = false;        // every body's own x, y, z axes as red, green, blue rods
 };
 
 struct Scene {

@@ -30,20 +30,6 @@ void read_world(JsonReader r, Scene& s) {
     r.finish();
 }
 
-void read_camera(JsonReader r, render::Camera& c) {
-    if (auto p = r.optional("position"))
-        c.position = read_glm_vec3(*p, "a camera position in metres");
-    if (auto t = r.optional("target")) c.target = read_glm_vec3(*t, "a camera target in metres");
-    if (auto u = r.optional("up")) c.up = read_glm_vec3(*u, "an up direction");
-    if (auto f = r.optional("fov_deg")) {
-        const double fov = f->positive("a vertical field of view in degrees");
-        if (fov >= 179.0) f->fail("expected a vertical field of view below 179 degrees");
-        c.fov_y_deg = static_cast<float>(fov);
-    }
-    if (glm::length(c.position - c.target) == 0.0f) r.fail("camera position and target coincide");
-    r.finish();
-}
-
 void read_light(JsonReader r, render::Light& l) {
     if (auto d = r.optional("direction")) {
         l.direction = read_glm_vec3(*d, "the direction the light travels [x, y, z]");
@@ -60,9 +46,13 @@ void read_render(JsonReader r, RenderSettings& rs) {
     if (auto h = r.optional("height"))
         rs.height = h->integer(16, 4320, "an image height in pixels");
     if (auto f = r.optional("fps")) rs.fps = f->integer(1, 1000, "frames per second");
-    if (auto c = r.optional("camera")) read_camera(*c, rs.camera);
+    if (auto c = r.optional("camera")) read_camera_rig(*c, rs.camera);
     if (auto l = r.optional("light")) read_light(*l, rs.light);
     if (auto b = r.optional("background")) rs.background = read_color(*b);
+    if (auto v = r.optional("shadows")) rs.shadows = v->boolean();
+    if (auto v = r.optional("antialiasing")) rs.antialiasing = v->boolean();
+    if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
+    if (auto v = r.optional("axes")) rs.axes = v->boolean();
     r.finish();
 }
 
@@ -89,6 +79,9 @@ Scene load_scene(const std::string& text, const std::string& source) {
     for (std::size_t i = 0; i < n; ++i)
         read_body(bodies.at(i), static_cast<int>(i), s.bodies[i], s.looks[i]);
     r.finish();
+    std::vector<std::string> names;
+    for (const BodyLook& look : s.looks) names.push_back(look.name);
+    resolve_followed_body(s.render.camera, names, source);
     (void)make_simulation(s, s.world.dt); // physics validation, mapped to JSON paths
     return s;
 }

@@ -1,10 +1,9 @@
 #include "app/still.h"
 
+#include "app/frame_source.h"
 #include "app/scene_error.h"
 #include "app/simulation.h"
 #include "app/timeline.h"
-#include "app/view_builder.h"
-#include "physics/step.h"
 
 namespace tumble::app {
 
@@ -14,10 +13,9 @@ render::Image render_still(const Scene& scene, std::int64_t frame, render::Rende
         throw SceneError(scene.source, "frame " + std::to_string(frame),
                          "expected a frame index in [0, " + std::to_string(tl.frames - 1) + "]");
     Simulation sim = make_simulation(scene, tl.h);
-    for (std::int64_t s = 0; s < frame * tl.steps_per_frame; ++s)
-        physics::step(sim.model, sim.state);
+    FrameSource source(scene, tl, sim, frame, frame);
     render::SceneView view;
-    build_view(scene, sim.model, sim.state, view);
+    source.next(view);
     render::Image image;
     renderer.draw(view, image);
     return image;

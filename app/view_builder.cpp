@@ -1,5 +1,7 @@
 #include "app/view_builder.h"
 
+#include "app/materials.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -35,7 +37,13 @@ render::MeshKind mesh_kind(physics::ShapeKind k) {
 
 void build_view(const Scene& scene, const physics::Model& model, const physics::State& state,
                 render::SceneView& view) {
-    view.camera = scene.render.camera;
+    const CameraRig& rig = scene.render.camera;
+    glm::dvec3 followed(0.0);
+    if (rig.needs_body()) {
+        const physics::Vec3 p = physics::body_pose(model, state, rig.follow_body).position;
+        followed = {p.x(), p.y(), p.z()};
+    }
+    view.camera = camera_at(rig, state.time(model), followed);
     view.light = scene.render.light;
     view.background = scene.render.background;
     view.instances.clear();
@@ -46,7 +54,11 @@ void build_view(const Scene& scene, const physics::Model& model, const physics::
         glm::mat4 m = glm::mat4(glm::mat4_cast(q)); // rotation, computed in double then rounded
         m[3] = glm::vec4(pose.position.x(), pose.position.y(), pose.position.z(), 1.0);
         m = m * glm::scale(glm::mat4(1.0f), mesh_scale(model.shape[i], scene.looks[i]));
-        view.instances.push_back({mesh_kind(model.shape[i].kind), m, scene.looks[i].color});
+        const physics::ShapeKind kind = model.shape[i].kind;
+        render::Instance instance{mesh_kind(kind), m, scene.looks[i].color};
+        instance.material = scene.looks[i].material.value_or(default_material(kind));
+        instance.axes = scene.render.axes && kind != physics::ShapeKind::Plane;
+        view.instances.push_back(instance);
     }
 }
 

@@ -26,12 +26,34 @@ std::string lowercase(std::string text) {
 
 const char* const kSupported =
     "supported outputs: NAME.mp4 (H.264 video), NAME.png (one still), a directory such as "
-    "frames/ (PNG sequence 000000.png, 000001.png ...), or a pattern such as frames/%06d.png";
+    "frames/ (PNG sequence 000000.png, 000001.png ...), a pattern such as frames/%06d.png, or "
+    "null (draw and discard, for timing)";
+
+// Checks and counts frames, keeps none: the baseline that shows what a real sink costs.
+class NullSink final : public FrameSink {
+  public:
+    explicit NullSink(const SinkOptions& options) : options_(options) {}
+    void write(const Image& image) override {
+        detail::check_frame("null", image, options_.width, options_.height);
+        ++frames_;
+    }
+    void finish() override {
+        if (frames_ == 0) throw SinkError("null: no frame was written");
+    }
+    void abort() noexcept override {}
+    std::string describe() const override { return "null (frames discarded)"; }
+    std::int64_t frames_written() const override { return frames_; }
+
+  private:
+    SinkOptions options_;
+    std::int64_t frames_ = 0;
+};
 
 } // namespace
 
 std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOptions& options) {
     if (output.empty()) throw SinkError(std::string("no output given; ") + kSupported);
+    if (output == "null") return std::make_unique<NullSink>(options);
     std::error_code ec;
     if (output.back() == '/' || fs::is_directory(output, ec)) {
         return std::make_unique<PngSequenceSink>(FramePattern::in_directory(output), options);

@@ -4,6 +4,8 @@
 //   a directory (existing, or a name ending in '/')   PNG sequence dir/000000.png, 000001.png ...
 //   a name with a printf integer pattern, e.g. frames/%06d.png or shot_%04d.png   PNG sequence
 //   *.png (no pattern)         a single still: exactly one frame
+//   null                       nothing: frames are checked and discarded (timing baselines; a
+//                              directory called null is written as "null/")
 // Every file is written under a temporary name in the same directory and renamed only when it is
 // complete, so an interrupted or failed run never leaves a half-written file behind. A missing
 // output directory is created (one level: its parent must exist).

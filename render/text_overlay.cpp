@@ -26,7 +26,7 @@ TextOverlay::TextOverlay(int image_height)
     const std::string_view font = assets::find(kFont);
     if (font.empty()) throw RenderError(std::string("font ") + kFont + " is not embedded");
     const auto* data = reinterpret_cast<const unsigned char*>(font.data());
-    pixel_height_ = std::max(11.0f, std::round(float(image_height) / 32.0f));
+    pixel_height_ = std::max(11.0f, std::round(float(image_height) / 40.0f));
     atlas_width_ = pixel_height_ > 24 ? 1024 : 512;
     atlas_height_ = pixel_height_ > 48 ? 1024 : 512;
     std::vector<unsigned char> atlas(std::size_t(atlas_width_) * std::size_t(atlas_height_));

@@ -1,0 +1,227 @@
+// `tumble bench-render`: how fast frames go through the pipeline (app/pipeline.h), per stage and
+// end to end, for a fixed list of cases. Each case runs `repeats` times into its real sink and
+// `repeats` times into the null sink (same binary, same frames, interleaved so that a busy spell
+// on the machine hits both alike); the table shows medians and the ratio of the two end-to-end
+// rates, which says what the output costs beyond drawing. A benchmark, not a test: it asserts
+// nothing, it measures.
+#include "app/commands.h"
+#include "app/render_run.h"
+#include "app/scene_error.h"
+#include "app/scene_options.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace tumble::app {
+namespace {
+
+struct BenchCase {
+    const char* name;
+    const char* scene; // built-in scene name, or "spheres1000" (generated below)
+    const char* sink;  // "mp4" or "png"
+    bool preview;
+    bool shadows, antialiasing;
+    int width, height;
+    int frames, quick_frames;
+};
+
+// The targets of issue 5: the default demo at 720p with shadows and anti-aliasing (10 s at
+// 60 fps), the same into PNG frames, a 1000-sphere scene with shadows, and the preview mode.
+constexpr BenchCase kCases[] = {
+    {"default-720p-mp4", "default", "mp4", false, true, true, 1280, 720, 600, 120},
+    {"default-720p-png", "default", "png", false, true, true, 1280, 720, 240, 60},
+    {"spheres1000-720p", "spheres1000", "mp4", false, true, true, 1280, 720, 120, 30},
+    {"spheres1000-720p-noaa", "spheres1000", "mp4", false, true, false, 1280, 720, 120, 30},
+    {"default-preview", "default", "mp4", true, false, false, 640, 360, 600, 120},
+};
+
+// 1000 spheres in a 10 x 10 x 10 lattice above a ground, floating (gravity_scale 0) and each
+// spinning about its own axis, drifting together so nothing ever touches. The camera orbits.
+std::string spheres1000_json() {
+    std::ostringstream s;
+    s << R"json({"format_version": 1, "title": "1000 spheres (benchmark)",
+  "world": {"duration": 10},
+  "render": {"camera": {"position": [9, -12, 7], "target": [0, 0, 2.4], "fov_deg": 45,
+                        "orbit": {"period": 40}},
+             "light": {"direction": [-0.5, 0.4, -1.0], "ambient": 0.3}},
+  "bodies": [{"name": "ground", "shape": {"type": "plane", "extent": 40}, "color": [0.82, 0.82, 0.8]})json";
+    const char* colours[] = {"#c0392b", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#e67e22"};
+    for (int i = 0; i < 1000; ++i) {
+        const int a = i % 10, b = (i / 10) % 10, c = i / 100;
+        s << ",\n  {\"shape\": {\"type\": \"sphere\", \"radius\": 0.17}, \"gravity_scale\": 0, "
+          << "\"position\": [" << -2.7 + 0.6 * a << ", " << -2.7 + 0.6 * b << ", " << 0.5 + 0.45 * c
+          << "], \"velocity\": [0, 0, 0.02], \"angular_velocity\": [" << 0.3 * (a - 5) << ", "
+          << 0.2 * (b - 5) << ", 1.5], \"color\": \"" << colours[(a + b + c) % 6] << "\"}";
+    }
+    s << "\n]}\n";
+    return s.str();
+}
+
+Scene load_case_scene(const BenchCase& c) {
+    if (std::string(c.scene) == "spheres1000") return load_scene(spheres1000_json(), "spheres1000");
+    return load_scene_argument(c.scene);
+}
+
+struct Sample {
+    PipelineStats stats;
+};
+
+// One run of a case into `output` (a file, a folder, or "null").
+PipelineStats run_once(const BenchCase& c, int frames, const std::string& output) {
+    Scene scene = load_case_scene(c);
+    RenderCommand cmd;
+    cmd.preview = c.preview;
+    cmd.width = c.width;
+    cmd.height = c.height;
+    cmd.shadows = c.shadows;
+    cmd.antialiasing = c.antialiasing;
+    apply_render_overrides(cmd, scene);
+    scene.duration = double(frames) / scene.render.fps;
+    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    Simulation sim = make_simulation(scene, tl.h);
+    render::SinkOptions so;
+    so.width = scene.render.width;
+    so.height = scene.render.height;
+    so.fps = scene.render.fps;
+    auto sink = render::open_sink(output, so);
+    const RunResult r = render_frames(scene, tl, sim, *sink, 0, tl.frames - 1, true);
+    sink->finish();
+    return r.stats;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Row {
+    const BenchCase* c;
+    int frames, repeats;
+    double physics, render, output, e2e, null_render, null_e2e;
+    double ratio() const { return e2e > 0 ? null_e2e / e2e : 0.0; }
+};
+
+std::string options_label(const BenchCase& c) {
+    std::string s = c.preview ? "preview" : "";
+    auto add = [&s](const char* word) {
+        if (!s.empty()) s += '+';
+        s += word;
+    };
+    if (c.shadows) add("shadows");
+    if (c.antialiasing) add("msaa4");
+    return s.empty() ? "plain" : s;
+}
+
+std::string host_name() {
+    char name[256] = {};
+    gethostname(name, sizeof name - 1);
+    return name[0] ? name : "unknown";
+}
+
+void append_csv(const std::string& path, const std::string& machine, const std::vector<Row>& rows) {
+    const bool fresh = !std::filesystem::exists(path);
+    if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
+        std::filesystem::create_directories(parent);
+    std::ofstream out(path, std::ios::app);
+    if (fresh)
+        out << "date,machine,case,scene,width,height,options,sink,frames,repeats,physics_fps,"
+               "render_fps,output_fps,end_to_end_fps,null_render_fps,null_end_to_end_fps,"
+               "null_ratio\n";
+    char date[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
+    for (const Row& r : rows) {
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "%s,%s,%s,%s,%d,%d,%s,%s,%d,%d,%.1f,%.2f,%.2f,%.2f,%.2f,%.2f,%.3f\n", date,
+                      machine.c_str(), r.c->name, r.c->scene, r.c->width, r.c->height,
+                      options_label(*r.c).c_str(), r.c->sink, r.frames, r.repeats, r.physics,
+                      r.render, r.output, r.e2e, r.null_render, r.null_e2e, r.ratio());
+        out << line;
+    }
+    if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+} // namespace
+
+int run_bench_render(const BenchRenderCommand& cmd) {
+    std::vector<const BenchCase*> cases;
+    for (const BenchCase& c : kCases)
+        if (cmd.cases.empty() ||
+            std::find(cmd.cases.begin(), cmd.cases.end(), c.name) != cmd.cases.end())
+            cases.push_back(&c);
+    if (cases.size() < std::max<std::size_t>(1, cmd.cases.size())) {
+        std::string names;
+        for (const BenchCase& c : kCases) names += std::string(names.empty() ? "" : ", ") + c.name;
+        return report_error("unknown benchmark case; cases: " + names, kBadInput);
+    }
+    const auto scratch =
+        std::filesystem::temp_directory_path() / ("tumble-bench-" + std::to_string(::getpid()));
+    std::vector<Row> rows;
+    try {
+        for (const BenchCase* c : cases) {
+            const int frames = cmd.quick ? c->quick_frames : c->frames;
+            std::vector<double> physics, render, output, e2e, null_render, null_e2e;
+            for (int i = 0; i < cmd.repeats; ++i) {
+                std::filesystem::remove_all(scratch);
+                std::filesystem::create_directories(scratch);
+                const std::string out = std::string(c->sink) == "png"
+                                            ? (scratch / "frames/").string()
+                                            : (scratch / "bench.mp4").string();
+                const PipelineStats real = run_once(*c, frames, out);
+                const PipelineStats null = run_once(*c, frames, "null");
+                physics.push_back(real.physics.rate());
+                render.push_back(real.render.rate());
+                output.push_back(real.output.rate());
+                e2e.push_back(real.rate());
+                null_render.push_back(null.render.rate());
+                null_e2e.push_back(null.rate());
+                std::fprintf(stderr, "bench: %s run %d/%d: %.1f fps (null sink %.1f fps)\n",
+                             c->name, i + 1, cmd.repeats, real.rate(), null.rate());
+            }
+            rows.push_back({c, frames, cmd.repeats, median(physics), median(render), median(output),
+                            median(e2e), median(null_render), median(null_e2e)});
+        }
+        std::filesystem::remove_all(scratch);
+    } catch (const SceneError& e) {
+        std::filesystem::remove_all(scratch);
+        return report_error(e.what(), kBadInput);
+    } catch (const std::exception& e) {
+        std::filesystem::remove_all(scratch);
+        return report_error(e.what(), kRunFailed);
+    }
+    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s\n", "case", "size",
+                "options", "sink", "frames", "physics", "render", "output", "end-to-end",
+                "null e2e", "ratio");
+    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s\n", "", "", "", "", "",
+                "fps", "fps", "fps", "fps", "fps", "");
+    for (const Row& r : rows) {
+        char size[32];
+        std::snprintf(size, sizeof size, "%dx%d", r.c->width, r.c->height);
+        std::printf("%-22s %-9s %-15s %-4s %6d | %9.1f %8.1f %8.1f | %10.1f | %9.1f %6.2f\n",
+                    r.c->name, size, options_label(*r.c).c_str(), r.c->sink, r.frames, r.physics,
+                    r.render, r.output, r.e2e, r.null_e2e, r.ratio());
+    }
+    std::printf("medians of %d runs; stage rates are frames per second of busy time (queue waits "
+                "excluded); ratio = null-sink end-to-end / real end-to-end\n",
+                cmd.repeats);
+    if (!cmd.csv.empty()) {
+        try {
+            append_csv(cmd.csv, cmd.machine.empty() ? host_name() : cmd.machine, rows);
+        } catch (const std::exception& e) {
+            return report_error(e.what(), kRunFailed);
+        }
+        std::printf("appended to %s\n", cmd.csv.c_str());
+    }
+    return kOk;
+}
+
+} // namespace tumble::app

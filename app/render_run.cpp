@@ -1,0 +1,85 @@
+#include "app/render_run.h"
+
+#include "app/frame_source.h"
+#include "app/interrupt.h"
+#include "app/progress.h"
+#include "app/scene_error.h"
+
+#include <cstdio>
+
+namespace tumble::app {
+
+void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
+    RenderSettings& rs = scene.render;
+    if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing
+        rs.width = 640;
+        rs.height = 360;
+        rs.shadows = false;
+        rs.antialiasing = false;
+    }
+    if (cmd.width) rs.width = *cmd.width;
+    if (cmd.height) rs.height = *cmd.height;
+    if (cmd.fps) rs.fps = *cmd.fps;
+    if (cmd.shadows) rs.shadows = *cmd.shadows;
+    if (cmd.antialiasing) rs.antialiasing = *cmd.antialiasing;
+    if (cmd.overlay) rs.overlay = *cmd.overlay;
+    if (cmd.axes) rs.axes = *cmd.axes;
+    if (rs.width < 16 || rs.height < 16)
+        throw SceneError("--width/--height",
+                         std::to_string(rs.width) + "x" + std::to_string(rs.height),
+                         "expected at least 16x16 pixels");
+    if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
+}
+
+render::RenderOptions render_options(const RenderSettings& rs) {
+    render::RenderOptions o;
+    o.width = rs.width;
+    o.height = rs.height;
+    o.samples = rs.antialiasing ? 4 : 1;
+    o.shadows = rs.shadows;
+    return o;
+}
+
+RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
+                        render::FrameSink& sink, std::int64_t first, std::int64_t last,
+                        bool quiet) {
+    RunResult out;
+    FrameSource source(scene, tl, sim, first, last);
+    Progress progress("rendering", last - first + 1, quiet);
+    PipelineStages stages;
+    stages.produce = [&](render::SceneView& view) {
+        if (InterruptGuard::requested()) {
+            out.interrupted = true;
+            return false;
+        }
+        return source.next(view);
+    };
+    const render::RenderOptions options = render_options(scene.render);
+    stages.make_renderer = [options] { return std::make_unique<render::Renderer>(options); };
+    stages.consume = [&](const render::Image& image) {
+        sink.write(image);
+        ++out.frames;
+        progress.update(out.frames);
+    };
+    out.stats = run_pipeline(stages);
+    progress.finish();
+    return out;
+}
+
+std::string describe_stats(const PipelineStats& s) {
+    char buf[512];
+    auto line = [](const char* name, const StageStats& st, char* at, std::size_t size) {
+        return std::snprintf(at, size, "  %-8s %6lld frames  %8.3f s busy  %8.1f frames/s\n", name,
+                             static_cast<long long>(st.frames), st.busy, st.rate());
+    };
+    int n = std::snprintf(buf, sizeof buf, "pipeline stages (busy time excludes queue waits):\n");
+    n += line("physics", s.physics, buf + n, sizeof buf - std::size_t(n));
+    n += line("render", s.render, buf + n, sizeof buf - std::size_t(n));
+    n += line("output", s.output, buf + n, sizeof buf - std::size_t(n));
+    std::snprintf(buf + n, sizeof buf - std::size_t(n),
+                  "  %-8s %6lld frames  %8.3f s wall  %8.1f frames/s\n", "end-to-end",
+                  static_cast<long long>(s.frames), s.wall, s.rate());
+    return buf;
+}
+
+} // namespace tumble::app

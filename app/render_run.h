@@ -1,0 +1,39 @@
+#pragma once
+// One rendering run, shared by `tumble render` and `tumble bench-render`: the scene's picture
+// settings with the command line's overrides, and the frame pipeline (app/pipeline.h) from the
+// simulation to a sink.
+#include "app/commands.h"
+#include "app/pipeline.h"
+#include "app/scene.h"
+#include "app/simulation.h"
+#include "app/timeline.h"
+#include "render/frame_sink.h"
+#include "render/renderer.h"
+
+#include <cstdint>
+
+namespace tumble::app {
+
+// --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
+// --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws SceneError.
+void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
+
+// The renderer's options for a scene's render settings.
+render::RenderOptions render_options(const RenderSettings& settings);
+
+struct RunResult {
+    std::int64_t frames = 0;
+    bool interrupted = false;
+    PipelineStats stats;
+};
+
+// Draws frames first..last of `sim` (at t = 0) into `sink` through the pipeline; stops early,
+// finishing the frames in flight, on Ctrl-C. Does not finish() the sink. Throws what the stages
+// throw (DivergenceError, RenderError, SinkError).
+RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
+                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet);
+
+// A stage table for --stats and benchmarks, one line per stage.
+std::string describe_stats(const PipelineStats& stats);
+
+} // namespace tumble::app
