@@ -56,6 +56,8 @@ struct GoldensCommand {
     std::string manifest;
     std::string artifacts = "golden-artifacts"; // where check writes actual and diff images
     bool force = false;
+    bool add_missing = false;        // update: only add goldens for built-in scenes without any
+    std::vector<std::string> scenes; // only the entries of these scenes (empty: all)
 };
 
 struct DiffCommand {

@@ -41,6 +41,25 @@ std::string image_name(const std::string& scene, std::int64_t frame, bool overla
 
 } // namespace
 
+std::vector<GoldenEntry> new_scene_entries(const GoldenManifest& m, const std::string& scene,
+                                           std::int64_t frames) {
+    std::vector<GoldenEntry> out;
+    render::CompareOptions defaults;
+    const nlohmann::json root = parse_json(read_file(m.path), m.path.string());
+    if (root.contains("compare"))
+        defaults = read_compare(JsonReader(root["compare"], m.path.string(), "/compare"), defaults);
+    for (std::int64_t frame : {std::int64_t{0}, frames / 2, frames - 1}) {
+        if (!out.empty() && out.back().frame == frame) continue; // a scene of one or two frames
+        GoldenEntry g;
+        g.scene = scene;
+        g.frame = frame;
+        g.compare = defaults;
+        g.image = m.path.parent_path() / image_name(scene, frame, false);
+        out.push_back(g);
+    }
+    return out;
+}
+
 std::string GoldenEntry::label() const {
     return scene + " frame " + std::to_string(frame) + (overlay ? " with overlay" : "");
 }
@@ -74,10 +93,16 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& path) {
     return m;
 }
 
-void save_golden_manifest(const GoldenManifest& m) {
+void save_golden_manifest(const GoldenManifest& m, const std::vector<GoldenEntry>& added) {
     nlohmann::json root = parse_json(read_file(m.path), m.path.string());
     root["gl_renderer"] = m.gl_renderer;
     root["gl_version"] = m.gl_version;
+    for (const GoldenEntry& g : added) {
+        nlohmann::json e = {
+            {"scene", g.scene}, {"frame", g.frame}, {"width", g.width}, {"height", g.height}};
+        if (g.overlay) e["overlay"] = true;
+        root["images"].push_back(e);
+    }
     render::AtomicFile file(m.path);
     std::ofstream out(file.temp_path(), std::ios::binary);
     out << root.dump(2) << "\n";

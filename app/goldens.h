@@ -36,6 +36,15 @@ struct GoldenManifest {
 };
 
 GoldenManifest load_golden_manifest(const std::filesystem::path& path); // throws SceneError
-void save_golden_manifest(const GoldenManifest& manifest); // rewrites renderer fields atomically
+
+// Rewrites the manifest's renderer fields and appends `added` to its images, atomically; the
+// rest of the file is kept as it is.
+void save_golden_manifest(const GoldenManifest& manifest,
+                          const std::vector<GoldenEntry>& added = {});
+
+// The goldens a new scene gets: its first, middle and last frames (of `frames`) at 320x180 with
+// the manifest's compare settings.
+std::vector<GoldenEntry> new_scene_entries(const GoldenManifest& manifest, const std::string& scene,
+                                           std::int64_t frames);
 
 } // namespace tumble::app

@@ -5,7 +5,10 @@
 //           Exit 0 all match, 1 some differ, 3 some differ *and* the goldens were made by a
 //           different GL renderer/version (a renderer mismatch, not necessarily a bug).
 //   update  re-renders and rewrites the goldens on purpose; refuses when this machine's renderer
-//           differs from the one recorded in the manifest unless --force.
+//           differs from the one recorded in the manifest unless --force. With --add-missing
+//           it only adds goldens (first, middle and last frame at 320x180) for built-in scenes
+//           that have none, touching no existing image: the one command a new scene needs.
+//   --scene NAME limits check or update to that scene's entries.
 #include "app/commands.h"
 #include "app/goldens.h"
 #include "app/render_run.h"
@@ -13,9 +16,11 @@
 #include "app/scene_error.h"
 #include "app/scene_options.h"
 #include "app/still.h"
+#include "app/timeline.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <map>
@@ -47,7 +52,18 @@ render::Image render_entry(const GoldenManifest& m, const GoldenEntry& g, Render
     return render_still(scene, g.frame, cache.get(render_options(scene.render)));
 }
 
-int check(const GoldenManifest& m, const std::filesystem::path& artifacts, RendererCache& cache) {
+// Scene name of an entry as `tumble scenes` lists it ("default" for "default.json").
+std::string scene_stem(const std::string& scene) {
+    return std::filesystem::path(scene).stem().string();
+}
+
+bool selected(const GoldensCommand& cmd, const GoldenEntry& g) {
+    return cmd.scenes.empty() ||
+           std::find(cmd.scenes.begin(), cmd.scenes.end(), scene_stem(g.scene)) != cmd.scenes.end();
+}
+
+int check(const GoldenManifest& m, const GoldensCommand& cmd, RendererCache& cache) {
+    const std::filesystem::path artifacts = cmd.artifacts;
     const std::string renderer = cache.any().gl_renderer(), version = cache.any().gl_version();
     const bool mismatch = renderer != m.gl_renderer || version != m.gl_version;
     if (mismatch)
@@ -56,7 +72,10 @@ int check(const GoldenManifest& m, const std::filesystem::path& artifacts, Rende
             "Differences may come from the renderer, not from Tumble.\n",
             m.gl_renderer.c_str(), m.gl_version.c_str(), renderer.c_str(), version.c_str());
     int failures = 0;
+    int checked = 0;
     for (const GoldenEntry& g : m.entries) {
+        if (!selected(cmd, g)) continue;
+        ++checked;
         const render::Image actual = render_entry(m, g, cache);
         const render::Image golden = render::read_png(g.image);
         const render::CompareResult r = render::compare_images(actual, golden, g.compare);
@@ -73,25 +92,46 @@ int check(const GoldenManifest& m, const std::filesystem::path& artifacts, Rende
         if (r.same_size)
             std::printf("       diff:   %s\n", (artifacts / (stem + ".diff.png")).c_str());
     }
-    std::printf("%zu golden image(s), %d failed\n", m.entries.size(), failures);
+    std::printf("%d golden image(s), %d failed\n", checked, failures);
     return failures == 0 ? kOk : mismatch ? 3 : kRunFailed;
 }
 
-int update(GoldenManifest m, bool force, RendererCache& cache) {
+// Built-in scenes with no golden in the manifest, with their goldens-to-be.
+std::vector<GoldenEntry> missing_entries(const GoldenManifest& m) {
+    std::vector<GoldenEntry> out;
+    for (const std::string& name : builtin_scene_names()) {
+        const bool covered =
+            std::any_of(m.entries.begin(), m.entries.end(),
+                        [&](const GoldenEntry& g) { return scene_stem(g.scene) == name; });
+        if (covered) continue;
+        const Scene scene = load_scene_argument(name);
+        const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+        for (GoldenEntry& g : new_scene_entries(m, name, tl.frames)) out.push_back(g);
+    }
+    return out;
+}
+
+int update(GoldenManifest m, const GoldensCommand& cmd, RendererCache& cache) {
     const std::string renderer = cache.any().gl_renderer(), version = cache.any().gl_version();
-    if ((renderer != m.gl_renderer || version != m.gl_version) && !force && !m.gl_renderer.empty())
+    if ((renderer != m.gl_renderer || version != m.gl_version) && !cmd.force &&
+        !m.gl_renderer.empty())
         return report_error("refusing to update goldens made with \"" + m.gl_renderer + "\" / \"" +
                                 m.gl_version + "\" from \"" + renderer + "\" / \"" + version +
                                 "\"; pass --force to replace them anyway",
                             kBadInput);
-    for (const GoldenEntry& g : m.entries) {
+    const std::vector<GoldenEntry> added =
+        cmd.add_missing ? missing_entries(m) : std::vector<GoldenEntry>{};
+    const std::vector<GoldenEntry>& todo = cmd.add_missing ? added : m.entries;
+    for (const GoldenEntry& g : todo) {
+        if (!cmd.add_missing && !selected(cmd, g)) continue;
         // Goldens are committed: smallest file (level 9) rather than fastest.
         render::write_png(g.image, render_entry(m, g, cache), {render::PngEncoder::libpng, 9});
         std::printf("wrote %s (%s)\n", g.image.c_str(), g.label().c_str());
     }
+    if (cmd.add_missing && added.empty()) std::printf("every built-in scene has goldens\n");
     m.gl_renderer = renderer;
     m.gl_version = version;
-    save_golden_manifest(m);
+    save_golden_manifest(m, added);
     return kOk;
 }
 
@@ -101,8 +141,9 @@ int run_goldens(const GoldensCommand& cmd) {
     try {
         const GoldenManifest m = load_golden_manifest(cmd.manifest);
         RendererCache cache;
-        if (cmd.action == "update") return update(m, cmd.force, cache);
-        return check(m, cmd.artifacts, cache);
+        if (cmd.action == "update") return update(m, cmd, cache);
+        if (cmd.add_missing) return report_error("--add-missing goes with update", kBadInput);
+        return check(m, cmd, cache);
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     } catch (const std::exception& e) {

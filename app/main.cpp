@@ -97,6 +97,10 @@ int main(int argc, char** argv) {
                   "folder for actual and diff images of failures");
     g->add_flag("--force", goldens.force,
                 "update even when the goldens were made by another GL renderer");
+    g->add_flag("--add-missing", goldens.add_missing,
+                "update: add goldens (first, middle, last frame) for every built-in scene that "
+                "has none, leaving the others untouched");
+    g->add_option("--scene", goldens.scenes, "only the goldens of this scene (repeatable)");
 
     DiffCommand diff;
     CLI::App* d = app.add_subcommand(

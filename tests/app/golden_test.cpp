@@ -6,6 +6,7 @@
 #include "render/png_io.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace tumble::test {
 namespace {
@@ -69,6 +70,44 @@ TEST(GoldenImages, UpdateRefusesGoldensFromAnotherRendererUnlessForced) {
     r = run_tumble(dir, "goldens update --force goldens/goldens.json");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(read_text(goldens / "goldens.json").find("another"), std::string::npos);
+}
+
+// A scene added to assets/scenes without goldens fails here, saying how to add them.
+TEST(GoldenImages, EveryBuiltInSceneHasGoldens) {
+    const std::string manifest = read_text(kGoldens / "goldens.json");
+    for (const auto& e : std::filesystem::directory_iterator(
+             std::filesystem::path(TUMBLE_SOURCE_DIR) / "assets/scenes")) {
+        if (e.path().extension() != ".json") continue;
+        const std::string name = e.path().stem().string();
+        EXPECT_NE(manifest.find("\"scene\": \"" + name + "\""), std::string::npos)
+            << "scene " << name << " has no golden images; add them with "
+            << "scripts/update-goldens.sh --add-missing (see README, Golden images)";
+    }
+}
+
+// --add-missing renders goldens for scenes without any and leaves the others alone.
+TEST(GoldenImages, AddMissingAddsFirstMiddleAndLastFramesOnly) {
+    const auto dir = scratch_dir();
+    const auto goldens = copy_goldens(dir);
+    nlohmann::json m = nlohmann::json::parse(read_text(goldens / "goldens.json"));
+    nlohmann::json kept = nlohmann::json::array();
+    for (const auto& image : m["images"])
+        if (image["scene"] != "default") kept.push_back(image);
+    m["images"] = kept; // as if default.json were a new scene
+    write_text(goldens / "goldens.json", m.dump(2));
+    for (const auto& e : std::filesystem::directory_iterator(goldens))
+        if (e.path().extension() == ".png") std::filesystem::remove(e.path());
+    CliResult r = run_tumble(dir, "goldens update goldens/goldens.json --add-missing");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(files_in(goldens), (std::vector<std::string>{"default_0000.png", "default_0300.png",
+                                                           "default_0599.png", "goldens.json"}));
+    m = nlohmann::json::parse(read_text(goldens / "goldens.json"));
+    EXPECT_EQ(m["images"].size(), kept.size() + 3);
+    r = run_tumble(dir, "goldens check goldens/goldens.json --scene default");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("3 golden image(s), 0 failed"), std::string::npos) << r.out;
+    r = run_tumble(dir, "goldens update goldens/goldens.json --add-missing"); // nothing to do
+    EXPECT_NE(r.out.find("every built-in scene has goldens"), std::string::npos) << r.out;
 }
 
 TEST(GoldenImages, RenderingTheSameFrameTwiceGivesIdenticalPixels) {
