@@ -26,22 +26,48 @@ void print_bodies(const Scene& scene, const physics::Model& m) {
     }
 }
 
+// How many dynamic bodies need each pass (the reason a pass is on, in numbers).
+struct PassCounts {
+    int dynamic = 0, gravity = 0, loaded = 0, anisotropic = 0;
+};
+
+PassCounts count_passes(const physics::Model& m) {
+    PassCounts c;
+    for (int i : m.dynamic_bodies) {
+        ++c.dynamic;
+        c.gravity += m.gravity_scale[i] != 0.0 && m.gravity != physics::Vec3::Zero();
+        c.loaded += m.applied_force[i] != physics::Vec3::Zero() ||
+                    m.applied_torque[i] != physics::Vec3::Zero();
+        c.anisotropic += !m.isotropic[i];
+    }
+    return c;
+}
+
 void print_passes(const physics::Model& m) {
     const physics::Passes& p = m.passes;
+    const PassCounts c = count_passes(m);
     std::printf("step stages:\n");
-    std::printf("  gravity        %s\n", p.gravity
-                                             ? "on: some dynamic body has g * gravity_scale != 0"
-                                             : "off: g = 0 or every gravity_scale is 0");
-    std::printf("  applied loads  %s\n", p.applied_loads
-                                             ? "on: some body has a constant force or torque"
-                                             : "off: no body has an applied force or torque");
-    std::printf("  gyroscopic     %s\n",
-                p.gyroscopic ? "on: some dynamic body has unequal principal moments"
-                             : "off: every dynamic body is isotropic (w x I w = 0)");
+    if (p.gravity)
+        std::printf("  gravity        on: %d of %d dynamic bodies feel g * gravity_scale != 0\n",
+                    c.gravity, c.dynamic);
+    else
+        std::printf("  gravity        off: g = 0 or every gravity_scale is 0 (no gravity work)\n");
+    if (p.applied_loads)
+        std::printf("  applied loads  on: %d of %d dynamic bodies have a force or torque\n",
+                    c.loaded, c.dynamic);
+    else
+        std::printf("  applied loads  off: no body has an applied force or torque%s\n",
+                    p.gravity ? "" : " (no velocity kicks at all)");
+    if (p.gyroscopic)
+        std::printf("  gyroscopic     on: %d of %d dynamic bodies have unequal moments%s\n",
+                    c.anisotropic, c.dynamic,
+                    c.anisotropic < c.dynamic ? " (the isotropic skip it: w x I w = 0)" : "");
+    else
+        std::printf("  gyroscopic     off: every dynamic body is isotropic (w x I w = 0)\n");
     std::printf("  contacts       off: not in this build (no contact stage yet)\n");
-    std::printf("  integrate      %s: %s\n",
-                std::string(physics::integrator_info(m.integrator).name).c_str(),
-                std::string(physics::integrator_info(m.integrator).summary).c_str());
+    const physics::IntegratorInfo& info = physics::integrator_info(m.integrator);
+    std::printf("  integrate      %s (order %d): %s\n", std::string(info.name).c_str(), info.order,
+                std::string(info.summary).c_str());
     std::printf(
         "  check finite   on: a NaN or infinite state stops the run naming body and step\n");
 }
