@@ -66,6 +66,14 @@ struct DiffCommand {
     render::CompareOptions options;
 };
 
+// `tumble study`: the work-precision study and the stability map (app/study.h, docs/study.md).
+struct StudyCommand {
+    bool quick = false;           // the small grid CI runs (under a minute on 2 cores)
+    std::string output = "study"; // folder for study.csv, study.json, report.md and plots/
+    int threads = 0;              // 0: one per hardware thread
+    bool quiet = false;
+};
+
 int run_render(const RenderCommand& cmd);
 int run_bench_render(const BenchRenderCommand& cmd);
 int run_goldens(const GoldensCommand& cmd);
@@ -74,5 +82,6 @@ int run_simulate(const SimulateCommand& cmd);
 int run_explain(const SceneOptions& opts);
 int run_list_scenes();
 int run_version();
+int run_study(const StudyCommand& cmd);
 
 } // namespace tumble::app

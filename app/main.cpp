@@ -118,6 +118,16 @@ int main(int argc, char** argv) {
     d->add_flag("!--no-aa", diff.options.detect_antialiasing,
                 "count anti-aliased pixels as different");
 
+    StudyCommand study;
+    CLI::App* st = app.add_subcommand(
+        "study",
+        "work-precision study of every integrator, and the stability map (report + plots)");
+    st->add_flag("--quick", study.quick, "small grid, under a minute on 2 cores (what CI runs)");
+    st->add_option("-o,--output", study.output, "output folder (default: study)");
+    st->add_option("--threads", study.threads, "worker threads (default: one per hardware thread)")
+        ->check(CLI::PositiveNumber);
+    st->add_flag("-q,--quiet", study.quiet, "no progress and no summary");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& h) {
@@ -135,6 +145,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("scenes")) return run_list_scenes();
     if (g->parsed()) return run_goldens(goldens);
     if (d->parsed()) return run_diff(diff);
+    if (st->parsed()) return run_study(study);
     std::fputs(app.help().c_str(), stdout);
     return kOk;
 }

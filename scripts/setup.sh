@@ -16,6 +16,9 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
+  # `tumble study` draws its plots by running gnuplot on generated scripts (pngcairo terminal,
+  # DejaVu fonts): a small, long-kept Debian package without X (docs/study.md says why).
+  gnuplot-nox fonts-dejavu-core
 )
 
 missing=()

@@ -1,0 +1,206 @@
+// `tumble study --quick` as CI runs it: the files it promises exist and parse, every registered
+// integrator is studied on every problem, measured orders match theory, divergences are recorded as
+// results, and the recommendation table follows from the rows (checked here independently).
+#include "app/cli_runner.h"
+#include "measured.h"
+#include "physics/integrator.h"
+#include "render/png_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace tumble::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CsvRow {
+    std::map<std::string, std::string> f;
+    double num(const std::string& key) const { return std::stod(f.at(key)); }
+};
+
+std::vector<CsvRow> read_csv(const fs::path& p) {
+    std::istringstream in(read_text(p));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream h(line);
+    for (std::string cell; std::getline(h, cell, ',');) header.push_back(cell);
+    std::vector<CsvRow> rows;
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        CsvRow r;
+        std::size_t i = 0;
+        for (std::string cell; i < header.size(); ++i) {
+            std::getline(s, cell, ',');
+            r.f[header[i]] = cell;
+        }
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+// The recommendation rule of docs/study.md, written again from the CSV: the cheapest row whose
+// orientation error (max over [0, T]) meets the target at its step and at every finer step of the
+// same integrator, none of them diverged.
+const CsvRow* cheapest(const std::vector<CsvRow>& rows, const std::string& problem, double target) {
+    const CsvRow* best = nullptr;
+    for (const CsvRow& r : rows) {
+        if (r.f.at("problem") != problem) continue;
+        bool ok = true;
+        for (const CsvRow& o : rows)
+            if (o.f.at("problem") == problem && o.f.at("integrator") == r.f.at("integrator") &&
+                o.num("dt") <= r.num("dt") &&
+                (o.f.at("diverged") == "1" || !(o.num("ori_max") <= target)))
+                ok = false;
+        if (ok && (!best || r.num("cost_s") < best->num("cost_s"))) best = &r;
+    }
+    return best;
+}
+
+// Pixels clearly coloured (not white, grey or black): the plotted lines.
+int coloured_pixels(const render::Image& img) {
+    int n = 0;
+    for (std::size_t i = 0; i + 2 < img.rgb.size(); i += 3) {
+        const int mx = std::max({img.rgb[i], img.rgb[i + 1], img.rgb[i + 2]});
+        const int mn = std::min({img.rgb[i], img.rgb[i + 1], img.rgb[i + 2]});
+        if (mx - mn > 60) ++n;
+    }
+    return n;
+}
+
+TEST(Study, QuickStudyWritesConsistentOutputs) {
+    const fs::path dir = scratch_dir();
+    const CliResult r = run_tumble(dir, "study --quick -o out --threads 2");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const fs::path out = dir / "out";
+    EXPECT_NE(r.out.find("recommendation"), std::string::npos) << r.out;
+
+    // Every row in both formats, every registered integrator on every problem.
+    const std::vector<CsvRow> rows = read_csv(out / "study.csv");
+    const nlohmann::json j = nlohmann::json::parse(read_text(out / "study.json"));
+    ASSERT_EQ(j["rows"].size(), rows.size());
+    std::set<std::string> problems;
+    for (const CsvRow& row : rows) problems.insert(row.f.at("problem"));
+    EXPECT_GE(problems.size(), 6u);
+    for (const std::string& p : problems)
+        for (const physics::IntegratorInfo& info : physics::integrators()) {
+            int count = 0;
+            for (const CsvRow& row : rows)
+                count += row.f.at("problem") == p && row.f.at("integrator") == info.name;
+            EXPECT_GE(count, 4) << p << " / " << info.name;
+        }
+
+    // Divergences are rows with body, step and quantity; other rows have finite errors.
+    int diverged = 0;
+    for (const CsvRow& row : rows) {
+        if (row.f.at("diverged") == "1") {
+            ++diverged;
+            EXPECT_GE(std::stoi(row.f.at("diverged_body")), 0);
+            EXPECT_GE(std::stoll(row.f.at("diverged_step")), 1);
+            EXPECT_FALSE(row.f.at("diverged_quantity").empty());
+        } else {
+            EXPECT_TRUE(std::isfinite(row.num("ori_end")) && std::isfinite(row.num("energy_max")))
+                << row.f.at("problem") << " " << row.f.at("integrator") << " " << row.f.at("dt");
+        }
+        EXPECT_GT(row.num("ns_per_body_step"), 0.0);
+    }
+    // The quick grid reaches h|w| = 1 on the fast spin, where explicit methods blow up.
+    TUMBLE_MEASURED(diverged, 1);
+    EXPECT_GE(diverged, 1);
+
+    // Orders: every integrator on the headline problem, and the higher-order methods wherever a
+    // fit exists, against the registry's theoretical order.
+    for (const auto& o : j["orders"]) {
+        if (o["measured"].is_null()) continue;
+        const double measured = o["measured"], theory = o["theory"];
+        const double deviation = std::abs(measured - theory);
+        if (o["problem"] == "intermediate-axis") {
+            std::printf("[measured] order of %s on the flip = %.3f (theory %g)\n",
+                        o["integrator"].get<std::string>().c_str(), measured, theory);
+            EXPECT_LE(deviation, 0.2) << o["integrator"];
+        } else if (theory >= 2) {
+            EXPECT_LE(deviation, 0.35) << o["problem"] << " / " << o["integrator"];
+        }
+    }
+
+    // The recommendation table (JSON and the end of report.md) follows from the rows.
+    const std::string report = read_text(out / "report.md");
+    const std::string table = report.substr(report.rfind("## Recommendation"));
+    ASSERT_EQ(j["recommendations"].size(), 3 * problems.size());
+    for (const auto& rec : j["recommendations"]) {
+        const std::string problem = rec["problem"];
+        const double target = rec["target"];
+        const CsvRow* expected = cheapest(rows, problem, target);
+        if (!expected) {
+            EXPECT_TRUE(rec["integrator"].is_null()) << problem << " " << target;
+            continue;
+        }
+        ASSERT_FALSE(rec["integrator"].is_null()) << problem << " " << target;
+        EXPECT_EQ(rec["integrator"], expected->f.at("integrator")) << problem << " " << target;
+        EXPECT_EQ(rec["steps"].get<long long>(), std::stoll(expected->f.at("steps")));
+        EXPECT_LE(rec["orientation_error"].get<double>(), target);
+        const std::string line = "| " + problem + " | " +
+                                 (target == 1e-2   ? "1e-02"
+                                  : target == 1e-4 ? "1e-04"
+                                                   : "1e-06") +
+                                 " | " + expected->f.at("integrator") + " |";
+        EXPECT_NE(table.find(line), std::string::npos) << line;
+    }
+
+    // The stability map: every integrator for every inertia case, within the searched range.
+    std::set<std::string> mapped;
+    for (const auto& s : j["stability"]) {
+        mapped.insert(s["integrator"].get<std::string>());
+        EXPECT_GE(s["h_w"].get<double>(), 1e-4);
+        EXPECT_LE(s["h_w"].get<double>(), 100.0);
+    }
+    EXPECT_EQ(mapped.size(), physics::integrators().size());
+    EXPECT_NE(report.find("## Stability map"), std::string::npos);
+
+    // Plots: PNGs gnuplot drew, with coloured lines in them, linked from the report.
+    std::vector<std::string> pngs = {"plots/energy.png", "plots/stability.png"};
+    for (const std::string& p : problems) {
+        pngs.push_back("plots/work-precision-" + p + ".png");
+        pngs.push_back("plots/error-vs-dt-" + p + ".png");
+    }
+    for (const std::string& png : pngs) {
+        EXPECT_NE(report.find("(" + png + ")"), std::string::npos) << png;
+        const render::Image img = render::read_png(out / png);
+        EXPECT_EQ(img.width, 900) << png;
+        EXPECT_GT(coloured_pixels(img), 500) << png;
+    }
+}
+
+TEST(Study, ErrorsDoNotDependOnTheThreadCount) {
+    // Each row is computed by one thread from its own state: only the timings may change.
+    const fs::path dir = scratch_dir();
+    ASSERT_EQ(run_tumble(dir, "study --quick -q -o one --threads 1").exit_code, 0);
+    ASSERT_EQ(run_tumble(dir, "study --quick -q -o two --threads 2").exit_code, 0);
+    const std::vector<CsvRow> a = read_csv(dir / "one/study.csv"),
+                              b = read_csv(dir / "two/study.csv");
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        for (const auto& [key, value] : a[i].f) {
+            if (key == "ns_per_body_step" || key == "steps_per_second" || key == "cost_s") continue;
+            EXPECT_EQ(value, b[i].f.at(key)) << "row " << i << " column " << key;
+        }
+    }
+}
+
+TEST(Study, UnwritableOutputIsBadInput) {
+    const fs::path dir = scratch_dir();
+    write_text(dir / "file", "not a folder");
+    const CliResult r = run_tumble(dir, "study --quick -o file/sub");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("file/sub"), std::string::npos) << r.err;
+}
+
+} // namespace
+} // namespace tumble::test
