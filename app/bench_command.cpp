@@ -9,6 +9,7 @@
 #include "app/scene_error.h"
 #include "app/scene_options.h"
 
+#include <cstdlib>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace tumble::app {
 namespace {
@@ -106,6 +108,7 @@ struct Row {
     const BenchCase* c;
     int frames, repeats;
     double physics, render, output, e2e, null_render, null_e2e;
+    double cpu_ms, null_cpu_ms; // process CPU time per frame, every thread
     double ratio() const { return e2e > 0 ? null_e2e / e2e : 0.0; }
 };
 
@@ -126,25 +129,34 @@ std::string host_name() {
     return name[0] ? name : "unknown";
 }
 
-void append_csv(const std::string& path, const std::string& machine, const std::vector<Row>& rows) {
+// The 1-minute load average: other work on the machine slows every wall-clock rate.
+double load_average() {
+    double load[1] = {0.0};
+    return getloadavg(load, 1) == 1 ? load[0] : -1.0;
+}
+
+void append_csv(const std::string& path, const std::string& machine, const std::vector<Row>& rows,
+                double load) {
     const bool fresh = !std::filesystem::exists(path);
     if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
         std::filesystem::create_directories(parent);
     std::ofstream out(path, std::ios::app);
     if (fresh)
-        out << "date,machine,case,scene,width,height,options,sink,frames,repeats,physics_fps,"
-               "render_fps,output_fps,end_to_end_fps,null_render_fps,null_end_to_end_fps,"
-               "null_ratio\n";
+        out << "date,machine,load_1min,case,scene,width,height,options,sink,frames,repeats,"
+               "physics_fps,render_fps,output_fps,end_to_end_fps,null_render_fps,"
+               "null_end_to_end_fps,null_ratio,cpu_ms_per_frame,null_cpu_ms_per_frame\n";
     char date[32];
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
     for (const Row& r : rows) {
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%s,%s,%s,%s,%d,%d,%s,%s,%d,%d,%.1f,%.2f,%.2f,%.2f,%.2f,%.2f,%.3f\n", date,
-                      machine.c_str(), r.c->name, r.c->scene, r.c->width, r.c->height,
+                      "%s,%s,%.2f,%s,%s,%d,%d,%s,%s,%d,%d,%.1f,%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.1f,"
+                      "%.1f\n",
+                      date, machine.c_str(), load, r.c->name, r.c->scene, r.c->width, r.c->height,
                       options_label(*r.c).c_str(), r.c->sink, r.frames, r.repeats, r.physics,
-                      r.render, r.output, r.e2e, r.null_render, r.null_e2e, r.ratio());
+                      r.render, r.output, r.e2e, r.null_render, r.null_e2e, r.ratio(), r.cpu_ms,
+                      r.null_cpu_ms);
         out << line;
     }
     if (!out) throw std::runtime_error("cannot write " + path);
@@ -169,7 +181,7 @@ int run_bench_render(const BenchRenderCommand& cmd) {
     try {
         for (const BenchCase* c : cases) {
             const int frames = cmd.quick ? c->quick_frames : c->frames;
-            std::vector<double> physics, render, output, e2e, null_render, null_e2e;
+            std::vector<double> physics, render, output, e2e, null_render, null_e2e, cpu, null_cpu;
             for (int i = 0; i < cmd.repeats; ++i) {
                 std::filesystem::remove_all(scratch);
                 std::filesystem::create_directories(scratch);
@@ -184,11 +196,14 @@ int run_bench_render(const BenchRenderCommand& cmd) {
                 e2e.push_back(real.rate());
                 null_render.push_back(null.render.rate());
                 null_e2e.push_back(null.rate());
+                cpu.push_back(1e3 * real.cpu / double(std::max<std::int64_t>(1, real.frames)));
+                null_cpu.push_back(1e3 * null.cpu / double(std::max<std::int64_t>(1, null.frames)));
                 std::fprintf(stderr, "bench: %s run %d/%d: %.1f fps (null sink %.1f fps)\n",
                              c->name, i + 1, cmd.repeats, real.rate(), null.rate());
             }
             rows.push_back({c, frames, cmd.repeats, median(physics), median(render), median(output),
-                            median(e2e), median(null_render), median(null_e2e)});
+                            median(e2e), median(null_render), median(null_e2e), median(cpu),
+                            median(null_cpu)});
         }
         std::filesystem::remove_all(scratch);
     } catch (const SceneError& e) {
@@ -198,24 +213,27 @@ int run_bench_render(const BenchRenderCommand& cmd) {
         std::filesystem::remove_all(scratch);
         return report_error(e.what(), kRunFailed);
     }
-    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s\n", "case", "size",
-                "options", "sink", "frames", "physics", "render", "output", "end-to-end",
-                "null e2e", "ratio");
-    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s\n", "", "", "", "", "",
-                "fps", "fps", "fps", "fps", "fps", "");
+    const double load = load_average();
+    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "case",
+                "size", "options", "sink", "frames", "physics", "render", "output", "end-to-end",
+                "null e2e", "ratio", "cpu", "null");
+    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "", "", "",
+                "", "", "fps", "fps", "fps", "fps", "fps", "", "ms/fr", "ms/fr");
     for (const Row& r : rows) {
         char size[32];
         std::snprintf(size, sizeof size, "%dx%d", r.c->width, r.c->height);
-        std::printf("%-22s %-9s %-15s %-4s %6d | %9.1f %8.1f %8.1f | %10.1f | %9.1f %6.2f\n",
+        std::printf("%-22s %-9s %-15s %-4s %6d | %9.1f %8.1f %8.1f | %10.1f | %9.1f %6.2f | %7.1f "
+                    "%7.1f\n",
                     r.c->name, size, options_label(*r.c).c_str(), r.c->sink, r.frames, r.physics,
-                    r.render, r.output, r.e2e, r.null_e2e, r.ratio());
+                    r.render, r.output, r.e2e, r.null_e2e, r.ratio(), r.cpu_ms, r.null_cpu_ms);
     }
     std::printf("medians of %d runs; stage rates are frames per second of busy time (queue waits "
-                "excluded); ratio = null-sink end-to-end / real end-to-end\n",
-                cmd.repeats);
+                "excluded); ratio = null-sink end-to-end / real end-to-end; cpu = process CPU "
+                "time per frame, all threads; 1-minute load average %.2f on %u cores\n",
+                cmd.repeats, load, std::thread::hardware_concurrency());
     if (!cmd.csv.empty()) {
         try {
-            append_csv(cmd.csv, cmd.machine.empty() ? host_name() : cmd.machine, rows);
+            append_csv(cmd.csv, cmd.machine.empty() ? host_name() : cmd.machine, rows, load);
         } catch (const std::exception& e) {
             return report_error(e.what(), kRunFailed);
         }

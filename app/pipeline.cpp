@@ -8,6 +8,8 @@
 #include <optional>
 #include <thread>
 
+#include <sys/resource.h>
+
 namespace tumble::app {
 namespace {
 
@@ -15,6 +17,15 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// CPU time of the process so far, user + system, every thread. On a machine shared with other
+// work the wall-clock rates vary with the load; the CPU time per frame does much less.
+double process_cpu_seconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return s(u.ru_utime) + s(u.ru_stime);
 }
 
 // A FIFO of at most `capacity` items between two threads. close() wakes every waiter: push then
@@ -90,6 +101,7 @@ PipelineStats run_pipeline(const PipelineStages& stages, int depth) {
     FirstError error;
     auto stop_all = [&] { views.close(), free_views.close(), images.close(), free_images.close(); };
     const auto t0 = Clock::now();
+    const double cpu0 = process_cpu_seconds();
 
     std::thread physics([&] {
         try {
@@ -145,6 +157,7 @@ PipelineStats run_pipeline(const PipelineStages& stages, int depth) {
     physics.join();
     render.join();
     stats.wall = seconds_since(t0);
+    stats.cpu = process_cpu_seconds() - cpu0;
     stats.frames = stats.output.frames;
     error.rethrow();
     return stats;

@@ -31,6 +31,7 @@ struct StageStats {
 struct PipelineStats {
     StageStats physics, render, output;
     double wall = 0.0; // s, first frame requested to last frame written
+    double cpu = 0.0;  // s of CPU time of the whole process (all threads, llvmpipe's too)
     std::int64_t frames = 0;
     double rate() const { return wall > 0.0 ? double(frames) / wall : 0.0; }
 };

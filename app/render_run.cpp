@@ -5,6 +5,8 @@
 #include "app/progress.h"
 #include "app/scene_error.h"
 
+#include <malloc.h>
+
 #include <cstdio>
 
 namespace tumble::app {
@@ -40,9 +42,20 @@ render::RenderOptions render_options(const RenderSettings& rs) {
     return o;
 }
 
+void tune_allocator_for_rendering() {
+    // llvmpipe allocates and frees buffers of a few megabytes per draw call (vertex data for
+    // the rasteriser, binned triangles). glibc serves those with fresh mmap()s and returns them
+    // at free(), so every frame pays page faults for the same memory again: measured at 10-20%
+    // of a frame's CPU time (1000 spheres: 90 ms per frame with these settings, 130-200 without).
+    // Serving them from the heap and keeping freed memory there makes the reuse free.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20); // the largest glibc accepts
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
+
 RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
                         render::FrameSink& sink, std::int64_t first, std::int64_t last,
                         bool quiet) {
+    tune_allocator_for_rendering();
     RunResult out;
     FrameSource source(scene, tl, sim, first, last);
     Progress progress("rendering", last - first + 1, quiet);
@@ -77,8 +90,10 @@ std::string describe_stats(const PipelineStats& s) {
     n += line("render", s.render, buf + n, sizeof buf - std::size_t(n));
     n += line("output", s.output, buf + n, sizeof buf - std::size_t(n));
     std::snprintf(buf + n, sizeof buf - std::size_t(n),
-                  "  %-8s %6lld frames  %8.3f s wall  %8.1f frames/s\n", "end-to-end",
-                  static_cast<long long>(s.frames), s.wall, s.rate());
+                  "  %-8s %6lld frames  %8.3f s wall  %8.1f frames/s  (%.1f ms CPU per frame, all "
+                  "threads)\n",
+                  "end-to-end", static_cast<long long>(s.frames), s.wall, s.rate(),
+                  s.frames > 0 ? 1e3 * s.cpu / double(s.frames) : 0.0);
     return buf;
 }
 

@@ -33,6 +33,10 @@ struct RunResult {
 RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
                         render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet);
 
+// Process-wide malloc settings that spare llvmpipe a page fault storm every frame (see the .cpp).
+// render_frames() calls it; other long rendering loops may too.
+void tune_allocator_for_rendering();
+
 // A stage table for --stats and benchmarks, one line per stage.
 std::string describe_stats(const PipelineStats& stats);
 

@@ -1,5 +1,7 @@
 #include "render/batches.h"
 
+#include "render/color.h"
+
 #include <GL/glext.h>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_access.hpp>
@@ -18,7 +20,8 @@ float shininess_from_roughness(float roughness) {
 
 InstanceData make_instance_data(const glm::mat4& model, glm::vec3 color, const Material& material,
                                 bool checker) {
-    return {model, glm::inverseTranspose(glm::mat3(model)), glm::vec4(color, checker ? 1.0f : 0.0f),
+    return {model, glm::inverseTranspose(glm::mat3(model)),
+            glm::vec4(srgb_to_linear(color), checker ? 1.0f : 0.0f),
             glm::vec4(shininess_from_roughness(material.roughness),
                       std::clamp(material.specular, 0.0f, 1.0f),
                       std::clamp(material.metallic, 0.0f, 1.0f), 0.0f)};
@@ -26,26 +29,29 @@ InstanceData make_instance_data(const glm::mat4& model, glm::vec3 color, const M
 
 // --- BatchList -------------------------------------------------------------------------------
 void BatchList::clear() {
-    for (std::size_t i = 0; i < used_; ++i) groups_[i].items.clear();
+    for (std::size_t i = 0; i < used_; ++i) {
+        groups_[i].items.clear();
+        groups_[i].distances.clear();
+    }
     used_ = 0;
     batches_.clear();
     data_.clear();
 }
 
-void BatchList::add(const GpuMesh* mesh, bool cull_back, int rank, const InstanceData& instance) {
-    for (std::size_t i = 0; i < used_; ++i) {
-        Group& g = groups_[i];
-        if (g.mesh == mesh && g.cull_back == cull_back) {
-            g.items.push_back(instance);
-            return;
-        }
+void BatchList::add(const GpuMesh* mesh, bool cull_back, int rank, const InstanceData& instance,
+                    float distance) {
+    Group* group = nullptr;
+    for (std::size_t i = 0; i < used_ && !group; ++i)
+        if (groups_[i].mesh == mesh && groups_[i].cull_back == cull_back) group = &groups_[i];
+    if (!group) {
+        if (used_ == groups_.size()) groups_.push_back({});
+        group = &groups_[used_++];
+        group->mesh = mesh;
+        group->cull_back = cull_back;
+        group->rank = rank;
     }
-    if (used_ == groups_.size()) groups_.push_back({});
-    Group& g = groups_[used_++];
-    g.mesh = mesh;
-    g.cull_back = cull_back;
-    g.rank = rank;
-    g.items.push_back(instance);
+    group->items.push_back(instance);
+    group->distances.push_back(distance);
 }
 
 void BatchList::finish() {
@@ -57,10 +63,15 @@ void BatchList::finish() {
     batches_.clear();
     data_.clear();
     for (std::size_t i : order_) {
-        const Group& g = groups_[i];
+        Group& g = groups_[i];
         batches_.push_back(
             {g.mesh, g.cull_back, std::uint32_t(data_.size()), std::uint32_t(g.items.size())});
-        data_.insert(data_.end(), g.items.begin(), g.items.end());
+        g.order.resize(g.items.size());
+        std::iota(g.order.begin(), g.order.end(), 0u);
+        std::stable_sort(g.order.begin(), g.order.end(), [&g](std::uint32_t a, std::uint32_t b) {
+            return g.distances[a] < g.distances[b];
+        });
+        for (std::uint32_t k : g.order) data_.push_back(g.items[k]);
     }
 }
 

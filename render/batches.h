@@ -24,12 +24,13 @@ namespace tumble::render {
 struct InstanceData {
     glm::mat4 model;         // unit mesh -> world (locations 2-5)
     glm::mat3 normal_matrix; // inverse-transpose of model's 3x3 (locations 6-8)
-    glm::vec4 color;         // sRGB base colour; a = 1 on the checkered ground (location 9)
+    glm::vec4 color;         // linear base colour; a = 1 on the checkered ground (location 9)
     glm::vec4 material;      // Blinn-Phong shininess, specular, metallic, 0 (location 10)
 };
 
-// The shader inputs of an instance. Normals transform by the inverse-transpose: a box squashed
-// in z must get normals stretched in z to stay perpendicular to its faces.
+// The shader inputs of an instance, `color` given in sRGB. Normals transform by the
+// inverse-transpose: a box squashed in z must get normals stretched in z to stay perpendicular
+// to its faces.
 InstanceData make_instance_data(const glm::mat4& model, glm::vec3 color, const Material& material,
                                 bool checker);
 
@@ -44,12 +45,15 @@ struct Batch {
     std::uint32_t count = 0;
 };
 
-// Instances grouped by (mesh, culling), in the order of `rank` (lower first), then of first use.
-// clear() keeps every buffer's capacity: a warmed-up list allocates nothing per frame.
+// Instances grouped by (mesh, culling), in the order of `rank` (lower first), then of first use;
+// within a group, nearest first by `distance` (front to back: the depth test then rejects the
+// hidden parts of later instances before they are shaded, which on llvmpipe is most of the cost
+// of a crowd). clear() keeps every buffer's capacity: a warmed-up list allocates nothing.
 class BatchList {
   public:
     void clear();
-    void add(const GpuMesh* mesh, bool cull_back, int rank, const InstanceData& instance);
+    void add(const GpuMesh* mesh, bool cull_back, int rank, const InstanceData& instance,
+             float distance = 0.0f);
     void finish(); // lays the groups out contiguously in data() and lists them in batches()
 
     const std::vector<Batch>& batches() const { return batches_; }
@@ -62,6 +66,8 @@ class BatchList {
         bool cull_back;
         int rank;
         std::vector<InstanceData> items;
+        std::vector<float> distances;
+        std::vector<std::uint32_t> order;
     };
     std::vector<Group> groups_; // groups_[0, used_) are this frame's; the rest are spare
     std::size_t used_ = 0;

@@ -119,12 +119,12 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
         const InstanceData data = make_instance_data(d.transform, d.color, d.material, checker);
         const float radius = lod_radius(d.kind, d.transform);
         if (frustum.intersects_sphere(centre, bound)) {
-            const float px = projected_radius_px(radius, glm::length(centre - cam.position),
-                                                 cam.fov_y_deg, s.height);
+            const float distance = glm::length(centre - cam.position);
+            const float px = projected_radius_px(radius, distance, cam.fov_y_deg, s.height);
             const GpuMesh* mesh = d.kind == MeshKind::Custom
                                       ? d.custom
                                       : &mesh_at_detail(lib, d.kind, px, kCameraError);
-            out.camera.add(mesh, closed, rank_of(d.kind), data);
+            out.camera.add(mesh, closed, rank_of(d.kind), data, distance);
         }
         if (s.shadows && d.kind != MeshKind::Plane &&
             shadow_region.intersects_swept_sphere(centre, bound, light_dir)) {

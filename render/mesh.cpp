@@ -74,13 +74,19 @@ MeshData make_box() {
 }
 
 // --- Plane -----------------------------------------------------------------------------------
-MeshData make_plane() {
+MeshData make_plane(int cells) {
     MeshData m;
     const glm::vec3 up{0, 0, 1};
-    for (glm::vec2 c : {glm::vec2{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-        m.vertices.push_back({{c.x, c.y, 0.0f}, up});
-    }
-    m.indices = {0, 1, 2, 0, 2, 3};
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i)
+            m.vertices.push_back({{-1.0f + 2.0f * float(i) / float(cells),
+                                   -1.0f + 2.0f * float(j) / float(cells), 0.0f},
+                                  up});
+    auto at = [cells](int i, int j) { return std::uint32_t(j * (cells + 1) + i); };
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i)
+            m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
+                                               at(i + 1, j + 1), at(i, j + 1)});
     return m;
 }
 

@@ -14,6 +14,7 @@
 
 #include "render/batches.h"
 #include "render/camera.h"
+#include "render/color.h"
 #include "render/draw_list.h"
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
@@ -34,29 +35,26 @@
 namespace tumble::render {
 namespace {
 
-// Width of the soft edge of a shadow, metres (at least 1.5 shadow-map texels).
-constexpr float kPenumbra = 0.025f;
-
 // Uniform locations of lit.vert + lit.frag, looked up once.
 struct LitUniforms {
-    GLint view_proj, camera_pos, light_dir, light_color, ambient, background;
-    GLint light_view_proj, normal_offset, shadow_map, shadow_radius;
+    GLint view_proj, camera_pos, light_dir, light_color, ambient, horizon, zenith;
+    GLint shadow_matrix, normal_offset, shadow_map, shadow_texel;
 
     explicit LitUniforms(const ShaderProgram& p)
         : view_proj(p.uniform("u_view_proj")), camera_pos(p.uniform("u_camera_pos")),
           light_dir(p.uniform("u_light_dir")), light_color(p.uniform("u_light_color")),
-          ambient(p.uniform("u_ambient")), background(p.uniform("u_background")),
-          light_view_proj(p.uniform("u_light_view_proj")),
+          ambient(p.uniform("u_ambient")), horizon(p.uniform("u_horizon")),
+          zenith(p.uniform("u_zenith")), shadow_matrix(p.uniform("u_shadow_matrix")),
           normal_offset(p.uniform("u_normal_offset")), shadow_map(p.uniform("u_shadow_map")),
-          shadow_radius(p.uniform("u_shadow_radius")) {}
+          shadow_texel(p.uniform("u_shadow_texel")) {}
 };
 
 struct SkyUniforms {
-    GLint inv_view_proj, camera_pos, background;
+    GLint inv_view_proj, camera_pos, horizon, zenith;
 
     explicit SkyUniforms(const ShaderProgram& p)
         : inv_view_proj(p.uniform("u_inv_view_proj")), camera_pos(p.uniform("u_camera_pos")),
-          background(p.uniform("u_background")) {}
+          horizon(p.uniform("u_horizon")), zenith(p.uniform("u_zenith")) {}
 };
 
 // The camera's matrices for one frame, computed once and shared by the passes.
@@ -183,7 +181,8 @@ struct Renderer::Impl {
 };
 
 void Renderer::Impl::shadow_pass() {
-    shadow_map->begin_pass(); // cleared even with no casters: then everything reads as lit
+    // Cleared even with no casters: then everything reads as lit.
+    shadow_map->begin_pass(lists.light.empty ? options.shadow_map_size : lists.light.map_size);
     if (lists.light.empty) return;
     shadow_instances.upload(lists.shadow);
     glEnable(GL_DEPTH_TEST);
@@ -210,15 +209,16 @@ void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
     glUniform3fv(u.light_dir, 1, glm::value_ptr(light_dir));
     glUniform3fv(u.light_color, 1, glm::value_ptr(view.light.color));
     glUniform1f(u.ambient, view.light.ambient);
-    glUniform3fv(u.background, 1, glm::value_ptr(view.background));
+    const SkyColours sky = sky_colours(view.background);
+    glUniform3fv(u.horizon, 1, glm::value_ptr(sky.horizon));
+    glUniform3fv(u.zenith, 1, glm::value_ptr(sky.zenith));
     if (options.shadows) {
         const LightFrame& light = lists.light;
-        const float extent = light.texel_size * float(options.shadow_map_size); // metres
-        glUniformMatrix4fv(u.light_view_proj, 1, GL_FALSE,
-                           glm::value_ptr(light.empty ? glm::mat4(1.0f) : light.view_proj));
+        // With no casters the identity puts every point at depth <= 1: all lit.
+        const glm::mat4 lookup = light.empty ? glm::mat4(1.0f) : shadow_map->lookup_matrix(light);
+        glUniformMatrix4fv(u.shadow_matrix, 1, GL_FALSE, glm::value_ptr(lookup));
         glUniform1f(u.normal_offset, 1.5f * light.texel_size);
-        glUniform1f(u.shadow_radius,
-                    light.empty ? 0.0f : std::max(kPenumbra, 1.5f * light.texel_size) / extent);
+        glUniform1f(u.shadow_texel, 1.0f / float(options.shadow_map_size));
         glUniform1i(u.shadow_map, 1);
         shadow_map->bind_texture(GL_TEXTURE1);
     }
@@ -236,7 +236,9 @@ void Renderer::Impl::sky_pass(const SceneView& view, const FrameMatrices& m) {
     glUseProgram(sky.id());
     glUniformMatrix4fv(sky_uniforms.inv_view_proj, 1, GL_FALSE, glm::value_ptr(m.inv_view_proj));
     glUniform3fv(sky_uniforms.camera_pos, 1, glm::value_ptr(view.camera.position));
-    glUniform3fv(sky_uniforms.background, 1, glm::value_ptr(view.background));
+    const SkyColours sky = sky_colours(view.background);
+    glUniform3fv(sky_uniforms.horizon, 1, glm::value_ptr(sky.horizon));
+    glUniform3fv(sky_uniforms.zenith, 1, glm::value_ptr(sky.zenith));
     glBindVertexArray(empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);

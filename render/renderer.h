@@ -22,7 +22,7 @@ struct RenderOptions {
     // context's GL_MAX_SAMPLES (4 on llvmpipe); options() reports the count in use.
     int samples = 4;
     bool shadows = true;        // shadow map from the key light
-    int shadow_map_size = 2048; // texels per side
+    int shadow_map_size = 1024; // texels per side at most (a small scene uses a smaller corner)
 };
 
 // What the last draw() did, for --stats and benchmarks.

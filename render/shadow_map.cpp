@@ -11,10 +11,10 @@
 
 namespace tumble::render {
 
-LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> casters, int map_size,
-                           float max_half_size) {
+LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> casters,
+                           int max_map_size, float texel_target, float max_half_size) {
     LightFrame out;
-    if (casters.empty() || map_size <= 0) return out;
+    if (casters.empty() || max_map_size <= 0) return out;
     // Light view: looking along the light from the origin; any up not parallel to it will do.
     const glm::vec3 d = glm::normalize(direction);
     const glm::vec3 up = std::abs(d.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
@@ -32,6 +32,11 @@ LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> caste
     const float raw_half =
         std::clamp(0.5f * std::max(hi.x - lo.x, hi.y - lo.y), 0.05f, max_half_size);
     const float half = std::exp2(std::ceil(4.0f * std::log2(raw_half * 1.02f)) / 4.0f);
+    // The map's size: the smallest power of two that gives texels no larger than the target, so
+    // that the soft edge the shader filters over is about one texel wide (see lit.frag).
+    int map_size = 64;
+    while (map_size < max_map_size && 2.0f * half / float(map_size) > texel_target) map_size *= 2;
+    map_size = std::min(map_size, max_map_size);
     const float texel = 2.0f * half / float(map_size);
     // Centre snapped to whole texels: moving the frustum by a fraction of a texel would move every
     // shadow edge's sampling pattern with it.
@@ -47,6 +52,7 @@ LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> caste
                                       centre.y + half, z_near, z_far);
     out.view_proj = proj * view;
     out.texel_size = texel;
+    out.map_size = map_size;
     out.empty = false;
     return out;
 }
@@ -88,12 +94,24 @@ ShadowMap::~ShadowMap() {
     if (texture_) glDeleteTextures(1, &texture_);
 }
 
-void ShadowMap::begin_pass() const {
+void ShadowMap::begin_pass(int used_size) const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glViewport(0, 0, size_, size_);
+    // The whole texture is cleared (glClear ignores the viewport): lookups that stray outside the
+    // used corner must read "far", not an older, larger frame's depths.
     glDepthMask(GL_TRUE);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
+    glViewport(0, 0, used_size, used_size);
+}
+
+glm::mat4 ShadowMap::lookup_matrix(const LightFrame& light) const {
+    // Light clip space [-1, 1] -> the used corner [0, used/size] of the texture, depth -> [0, 1].
+    const float corner = float(light.map_size) / float(size_);
+    glm::mat4 m(1.0f);
+    m[0][0] = m[1][1] = 0.5f * corner;
+    m[2][2] = 0.5f;
+    m[3] = glm::vec4(0.5f * corner, 0.5f * corner, 0.5f, 1.0f);
+    return m * light.view_proj;
 }
 
 void ShadowMap::bind_texture(GLenum unit) const {

@@ -4,8 +4,11 @@
 //      light's rays are parallel).
 //   2. When shading a point, look it up in that texture: if something nearer the light covered
 //      it, the point is in shadow. lit.frag compares with a sampler2DShadow and linear filtering
-//      (each lookup is a 2x2 percentage-closer filter) at several nearby positions, which gives a
-//      soft edge of a fixed width in metres (percentage-closer filtering, Reeves et al. 1987).
+//      (each lookup is a 2x2 percentage-closer filter) at four positions a texel apart, which
+//      gives a soft edge about two texels wide (percentage-closer filtering, Reeves et al. 1987).
+//      The map's resolution is chosen per frame so that a texel is about 1.2 cm (fit_light_frame):
+//      llvmpipe pays about 2 ms per 720p frame for every shadow lookup per pixel, so few
+//      lookups on a map of the right size beat many on a fine one.
 //
 // Acne (a surface shadowing itself in stripes) is avoided by drawing only the casters' back
 // faces into the map (the lit front faces then compare against a surface a body's thickness
@@ -26,13 +29,17 @@ namespace tumble::render {
 struct LightFrame {
     glm::mat4 view_proj{1.0f}; // world -> light clip space (x, y, z in [-1, 1] inside)
     float texel_size = 0.0f;   // one shadow-map texel, metres
+    int map_size = 0;          // texels per side actually used (a corner of the texture)
     bool empty = true;         // no casters: nothing to draw, nothing in shadow
 };
 
 // Fits the light's orthographic frustum around `casters` (xyz: centre, w: radius, world), for a
-// light travelling along `direction`, on a square map of `map_size` texels. The frustum's half
-// width is at most `max_half_size` metres around the casters' centre of bounds.
-LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> casters, int map_size,
+// light travelling along `direction`. The map uses the smallest power-of-two size (up to
+// `max_map_size`) whose texels are no larger than `texel_target` metres: shadows are filtered
+// over about a texel, so this sets how soft their edges are, and a small scene costs a small
+// map. The frustum's half width is at most `max_half_size` metres.
+LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> casters,
+                           int max_map_size, float texel_target = 0.012f,
                            float max_half_size = 40.0f);
 
 // The depth texture and the framebuffer that renders into it. Needs a current GL context.
@@ -43,9 +50,12 @@ class ShadowMap {
     ShadowMap(const ShadowMap&) = delete;
     ShadowMap& operator=(const ShadowMap&) = delete;
 
-    // Binds the framebuffer with the viewport on the whole map and clears it to "far".
-    void begin_pass() const;
+    // Binds the framebuffer, clears the whole map to "far" and sets the viewport to the corner of
+    // `used_size` texels this frame draws into.
+    void begin_pass(int used_size) const;
     void bind_texture(GLenum unit) const;
+    // World -> texture coordinates (xy, in the used corner) and reference depth (z) in [0, 1].
+    glm::mat4 lookup_matrix(const LightFrame& light) const;
     int size() const { return size_; }
 
   private:

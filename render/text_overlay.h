@@ -16,7 +16,8 @@ namespace tumble::render {
 class TextOverlay {
   public:
     // Bakes the font at a size that suits an image `image_height` pixels tall (1/40 of it, at
-    // least 11 pixels: 18 at 720p). Needs a current GL context; throws RenderError if the font is missing.
+    // least 11 pixels: 18 at 720p). Needs a current GL context; throws RenderError if the font is
+    // missing.
     explicit TextOverlay(int image_height);
     ~TextOverlay();
     TextOverlay(const TextOverlay&) = delete;

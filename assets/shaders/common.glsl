@@ -5,37 +5,31 @@
 // --- Colour spaces ----------------------------------------------------------------------------
 // Colours people pick (Instance::color, SceneView::background) are sRGB: the numbers follow a
 // perceptual curve, roughly value = light^(1/2.2). Light, though, adds up in *linear* units: two
-// lamps give twice the photons, not twice the sRGB number. So every shader converts its inputs
-// to linear, does the lighting there, and converts the result back to sRGB for the 8-bit image.
-// These are the exact sRGB curves: a straight segment near black, a 2.4 power elsewhere.
-vec3 srgb_to_linear(vec3 c) {
-    c = max(c, 0.0); // pow() of a negative number is NaN
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c));
-}
-
-vec3 linear_to_srgb(vec3 c) {
+// lamps give twice the photons, not twice the sRGB number. So the renderer converts colours to
+// linear (on the CPU, once per instance), the shaders light in linear units, and the result is
+// encoded back to sRGB for the 8-bit image by output_color().
+#ifdef SRGB_FRAMEBUFFER
+// The framebuffer is sRGB: the GL encodes on store, and averages MSAA samples in linear light.
+vec4 output_color(vec3 linear) { return vec4(linear, 1.0); }
+#else
+// The exact sRGB curve: a straight segment near black, a 2.4 power elsewhere.
+vec4 output_color(vec3 c) {
     c = clamp(c, 0.0, 1.0); // an 8-bit image cannot hold more than white
-    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+    return vec4(mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c)), 1.0);
 }
+#endif
 
 // --- Sky --------------------------------------------------------------------------------------
-// The sky is a vertical gradient made from the scene's one background colour: paler towards the
-// horizon (haze), deeper overhead (the colour squared: darker and more saturated). Distant
-// surfaces fade towards the same gradient (fog in lit.frag), so the ground's far edge melts into
-// the horizon. The two end colours are linear and the same for every pixel, so the vertex shaders
-// compute them (sky_horizon, sky_zenith) and the fragment shaders only blend (sky_gradient):
-// pow() is the costliest thing a CPU rasteriser runs per pixel.
-vec3 sky_horizon(vec3 background_srgb) {
-    return mix(srgb_to_linear(background_srgb), vec3(1.0), 0.4);
-}
-
-vec3 sky_zenith(vec3 background_srgb) {
-    vec3 base = srgb_to_linear(background_srgb);
-    return base * base;
-}
+// The sky is a vertical gradient between two linear colours made from the scene's one background
+// colour (render/renderer.cpp, sky_colours): paler towards the horizon (haze), deeper overhead.
+// Distant surfaces fade towards the same gradient (fog), so the ground's far edge melts into the
+// horizon. The end colours are uniforms, computed once per frame on the CPU: pow() is among the
+// costliest things a CPU rasteriser runs, per vertex as much as per pixel.
+uniform vec3 u_horizon; // linear
+uniform vec3 u_zenith;  // linear
 
 // `dir` is a world-space view direction (z up), any length.
-vec3 sky_gradient(vec3 dir, vec3 horizon, vec3 zenith) {
+vec3 sky_gradient(vec3 dir) {
     float elevation = clamp(dir.z / length(dir), 0.0, 1.0); // sine of the angle above horizon
-    return mix(horizon, zenith, sqrt(elevation));           // sqrt: keeps the haze band thin
+    return mix(u_horizon, u_zenith, sqrt(elevation));       // sqrt: keeps the haze band thin
 }

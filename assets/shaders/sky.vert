@@ -4,11 +4,8 @@
 
 uniform mat4 u_inv_view_proj; // clip -> world
 uniform vec3 u_camera_pos;
-uniform vec3 u_background;    // sRGB
 
-out vec3 v_dir;          // world-space direction from the eye through this point, any length
-flat out vec3 v_horizon; // linear sky colours (common.glsl), the same for every pixel
-flat out vec3 v_zenith;
+out vec3 v_dir; // world-space direction from the eye through this point, any length
 
 void main() {
     // Corners (-1,-1), (3,-1), (-1,3) in normalised device coordinates: a triangle twice the
@@ -18,7 +15,5 @@ void main() {
     // result is an affine function of ndc, so the interpolated v_dir is exact at every pixel.
     vec4 far_point = u_inv_view_proj * vec4(ndc, 1.0, 1.0);
     v_dir = far_point.xyz / far_point.w - u_camera_pos;
-    v_horizon = sky_horizon(u_background);
-    v_zenith = sky_zenith(u_background);
     gl_Position = vec4(ndc, 1.0, 1.0); // z = w: depth 1.0, behind everything drawn before
 }

@@ -86,11 +86,31 @@ TEST(Batches, InstancesAreGroupedByMeshInRankOrderAndReuseStorage) {
     }
 }
 
+TEST(Batches, InstancesOfABatchAreOrderedNearestFirst) {
+    GpuMesh* a = reinterpret_cast<GpuMesh*>(0x10);
+    BatchList list;
+    for (float distance : {5.0f, 1.0f, 3.0f, 1.0f}) {
+        const glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(distance, 0, 0));
+        list.add(a, true, 0, make_instance_data(m, {1, 1, 1}, {}, false), distance);
+    }
+    list.finish();
+    ASSERT_EQ(list.data().size(), 4u);
+    float last = 0.0f;
+    for (const InstanceData& d : list.data()) {
+        EXPECT_GE(d.model[3].x, last);
+        last = d.model[3].x;
+    }
+}
+
 TEST(Batches, InstanceDataCarriesNormalMatrixAndMaterial) {
     const glm::mat4 squash = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, 0.25f));
     const InstanceData d = make_instance_data(squash, {0.2f, 0.4f, 0.6f}, {0.0f, 0.7f, 1.0f}, true);
     EXPECT_FLOAT_EQ(d.normal_matrix[2][2], 4.0f); // normals stretch where the shape squashes
-    EXPECT_EQ(d.color, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    // sRGB in, linear out (IEC 61966-2-1: 0.2 -> 0.0331, 0.4 -> 0.1329, 0.6 -> 0.3185).
+    EXPECT_NEAR(d.color.r, 0.03310f, 1e-4f);
+    EXPECT_NEAR(d.color.g, 0.13287f, 1e-4f);
+    EXPECT_NEAR(d.color.b, 0.31855f, 1e-4f);
+    EXPECT_EQ(d.color.a, 1.0f);             // checker
     EXPECT_FLOAT_EQ(d.material.x, 1025.0f); // roughness 0: sharpest highlight
     EXPECT_FLOAT_EQ(d.material.y, 0.7f);
     EXPECT_FLOAT_EQ(d.material.z, 1.0f);
@@ -120,6 +140,19 @@ TEST(ShadowFit, CastersAreInsideAndTheFrustumIsStable) {
     const float shift_texels = (o2.x - o1.x) * 0.5f * 1024.0f;
     EXPECT_NEAR(shift_texels, std::round(shift_texels), 1e-2f);
     EXPECT_TRUE(fit_light_frame(light, {}, 1024).empty);
+}
+
+// The map is as small as the texel target allows: about 1.2 cm texels, at most max_map_size.
+TEST(ShadowFit, MapSizeFollowsTheCastersExtent) {
+    const glm::vec3 light{0, 0, -1};
+    const std::vector<glm::vec4> small{{0, 0, 1, 0.5f}};  // 1 m across
+    const std::vector<glm::vec4> large{{0, 0, 1, 10.0f}}; // 20 m across
+    const LightFrame s = fit_light_frame(light, small, 1024, 0.012f);
+    const LightFrame l = fit_light_frame(light, large, 1024, 0.012f);
+    EXPECT_EQ(s.map_size, 128); // 1.02 m / 0.012 m = 85 -> 128 texels
+    EXPECT_LE(s.texel_size, 0.012f);
+    EXPECT_EQ(l.map_size, 1024); // would need 2048: capped
+    EXPECT_GT(l.texel_size, 0.012f);
 }
 
 } // namespace

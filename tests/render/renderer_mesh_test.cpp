@@ -47,13 +47,19 @@ TEST(RendererMesh, BoxSpansMinusOneToOneWithFlatNormals) {
     expect_outward_ccw(m);
 }
 
-TEST(RendererMesh, PlaneIsUnitSquareFacingUp) {
-    const MeshData m = make_plane();
+TEST(RendererMesh, PlaneIsUnitSquareGridFacingUp) {
+    const MeshData m = make_plane(4);
+    EXPECT_EQ(m.vertices.size(), 25u);
+    EXPECT_EQ(m.indices.size(), 4u * 4u * 6u);
+    int corners = 0;
     for (const Vertex& v : m.vertices) {
         EXPECT_EQ(v.position.z, 0.0f);
-        EXPECT_EQ(std::abs(v.position.x), 1.0f);
+        EXPECT_LE(std::abs(v.position.x), 1.0f);
+        EXPECT_LE(std::abs(v.position.y), 1.0f);
         EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+        corners += std::abs(v.position.x) == 1.0f && std::abs(v.position.y) == 1.0f;
     }
+    EXPECT_EQ(corners, 4);
     expect_outward_ccw(m);
 }
 
