@@ -24,7 +24,7 @@
 //
 // Order: 2 (time-symmetric composition of exact flows).
 // Conserves: world angular momentum exactly without torque (every piece depends on m only, so
-// each flow keeps R m), to round-off (1e-14 relative over 1e5 steps, measured); |m|; symplectic,
+// each flow keeps R m), to round-off (8e-14 relative over 1e5 steps, measured); |m|; symplectic,
 // so the energy error stays bounded and oscillates, with no drift over long runs.
 // Known failure: an O(h^2) energy oscillation and O(h^2) phase error that accumulates linearly in
 // time (Buss 2000: the McLachlan-Reich methods are "excellent at approximate energy-conservation

