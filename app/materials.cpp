@@ -14,7 +14,7 @@ constexpr Preset kPresets[] = {{"plastic", {0.45f, 0.5f, 0.0f}},
                                {"glossy", {0.15f, 0.8f, 0.0f}},
                                {"matte", {0.9f, 0.1f, 0.0f}},
                                {"rubber", {0.7f, 0.2f, 0.0f}},
-                               {"metal", {0.3f, 1.0f, 1.0f}}};
+                               {"metal", {0.2f, 1.0f, 1.0f}}};
 
 float unit_interval(JsonReader r, const char* what) {
     const double v = r.number(what);

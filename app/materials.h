@@ -5,7 +5,7 @@
 //   glossy   roughness 0.15, specular 0.8   lacquer, polished stone
 //   matte    roughness 0.9,  specular 0.1   the default for planes: paper, chalk, concrete
 //   rubber   roughness 0.7,  specular 0.2
-//   metal    roughness 0.3,  specular 1.0, metallic 1   coloured highlights, no diffuse light
+//   metal    roughness 0.2,  specular 1.0, metallic 1   coloured highlights, no diffuse light
 #include "app/json_reader.h"
 #include "physics/shape.h"
 #include "render/scene_view.h"

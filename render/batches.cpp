@@ -159,14 +159,17 @@ bool Frustum::intersects_swept_sphere(glm::vec3 c, float r, glm::vec3 d) const {
     return true;
 }
 
-int segments_for(float radius_px, float max_error_px) {
+int segments_for(float radius_px, float max_error_px, float max_edge_px) {
     if (!(radius_px > max_error_px)) return 3;
     const float half_angle = std::acos(1.0f - max_error_px / radius_px);
-    return int(std::ceil(glm::pi<float>() / half_angle));
+    const float by_error = std::ceil(glm::pi<float>() / half_angle);
+    const float by_edge = std::ceil(glm::two_pi<float>() * radius_px / max_edge_px);
+    return int(std::max(by_error, by_edge));
 }
 
-std::size_t choose_level(std::span<const int> levels, float radius_px, float max_error_px) {
-    const int needed = segments_for(radius_px, max_error_px);
+std::size_t choose_level(std::span<const int> levels, float radius_px, float max_error_px,
+                         float max_edge_px) {
+    const int needed = segments_for(radius_px, max_error_px, max_edge_px);
     for (std::size_t i = 0; i < levels.size(); ++i)
         if (levels[i] >= needed) return i;
     return levels.size() - 1;

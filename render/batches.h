@@ -109,12 +109,15 @@ struct Frustum {
 };
 
 // Segments around a circle of `radius_px` pixels so that the polygon departs from the circle by
-// at most `max_error_px`: r (1 - cos(pi / N)) <= e.
-int segments_for(float radius_px, float max_error_px);
+// at most `max_error_px`, r (1 - cos(pi / N)) <= e, and no edge is longer than `max_edge_px`:
+// the eye picks out long straight edges on a big round outline even when they stay within a
+// fraction of a pixel of it.
+int segments_for(float radius_px, float max_error_px, float max_edge_px = 1e9f);
 
 // The first of `levels` (ascending segment counts) with at least segments_for(...); the last
 // level when none has enough.
-std::size_t choose_level(std::span<const int> levels, float radius_px, float max_error_px);
+std::size_t choose_level(std::span<const int> levels, float radius_px, float max_error_px,
+                         float max_edge_px = 1e9f);
 
 // Radius on screen, in pixels, of a sphere of `radius` at `distance` from a perspective camera
 // with vertical field of view `fov_y_deg` drawing `height_px` rows.

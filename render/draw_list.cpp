@@ -65,11 +65,13 @@ float lod_radius(MeshKind kind, const glm::mat4& t) {
     return 0.0f;
 }
 
-const GpuMesh& mesh_at_detail(const MeshLibrary& lib, MeshKind kind, float radius_px, float error) {
+const GpuMesh& mesh_at_detail(const MeshLibrary& lib, MeshKind kind, float radius_px, float error,
+                              float max_edge = 1e9f) {
     if (kind == MeshKind::Sphere)
-        return lib.spheres[choose_level(MeshLibrary::kSphereLevels, radius_px, error)];
+        return lib.spheres[choose_level(MeshLibrary::kSphereLevels, radius_px, error, max_edge)];
     if (kind == MeshKind::Cylinder)
-        return lib.cylinders[choose_level(MeshLibrary::kCylinderLevels, radius_px, error)];
+        return lib
+            .cylinders[choose_level(MeshLibrary::kCylinderLevels, radius_px, error, max_edge)];
     return kind == MeshKind::Box ? lib.box : lib.plane;
 }
 
@@ -123,7 +125,7 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
             const float px = projected_radius_px(radius, distance, cam.fov_y_deg, s.height);
             const GpuMesh* mesh = d.kind == MeshKind::Custom
                                       ? d.custom
-                                      : &mesh_at_detail(lib, d.kind, px, kCameraError);
+                                      : &mesh_at_detail(lib, d.kind, px, kCameraError, kCameraEdge);
             out.camera.add(mesh, closed, rank_of(d.kind), data, distance);
         }
         if (s.shadows && d.kind != MeshKind::Plane &&

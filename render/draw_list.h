@@ -59,6 +59,7 @@ struct DrawLists {
 // side by side on the 1000-sphere benchmark: 12 instead of 16 segments for a sphere 15 pixels
 // across, 120k instead of 224k triangles, 20 ms less per frame).
 constexpr float kCameraError = 0.6f; // pixels
+constexpr float kCameraEdge = 10.0f; // pixels: longest outline edge (big spheres looked faceted)
 constexpr float kShadowError = 2.0f; // shadow-map texels (the shadow filter blurs over two)
 
 // Rebuilds `out` for this frame. `custom[i]` is the GPU copy of view.meshes[i]. Throws

@@ -9,6 +9,7 @@
 
 in vec3 v_world;
 in vec3 v_normal;
+in vec2 v_local;         // unit-mesh x, y (the ground's square is [-1, 1]^2)
 flat in vec3 v_albedo;   // linear base colour
 flat in vec4 v_material; // shininess, specular, metallic, gloss (1 - roughness)
 flat in float v_checker; // 1 on the ground
@@ -21,7 +22,7 @@ uniform vec3 u_light_color; // linear
 uniform float u_ambient;    // fraction of the base colour lit by ambient light
 
 const float kSquare = 0.5;       // checker square size, metres
-const float kCheckerDark = 0.82; // dark squares' brightness relative to light ones: subtle
+const float kCheckerDark = 0.74; // dark squares' brightness relative to light ones
 const float kFogDistance = 60.0; // metres; fog covers 63% of the colour at this distance
 
 #ifdef SHADOWS
@@ -57,10 +58,10 @@ float checker(vec2 p) {
 // What a mirror would show in direction r: the sky gradient above the horizon, a dim ground
 // below, blurred towards their average as gloss goes to 0.
 vec3 environment(vec3 r, float gloss) {
-    vec3 ground = 0.35 * u_horizon;
-    vec3 sharp = mix(ground, sky_gradient(r), smoothstep(-0.05, 0.05, r.z));
+    vec3 ground = 0.25 * u_horizon;
+    vec3 sharp = mix(ground, sky_gradient(r), smoothstep(-0.03, 0.03, r.z));
     vec3 blurred = 0.5 * (ground + 0.5 * (u_horizon + u_zenith));
-    return mix(blurred, sharp, gloss * gloss);
+    return mix(blurred, sharp, gloss);
 }
 
 void main() {
@@ -106,5 +107,8 @@ void main() {
     // Fog: blend towards the sky seen in the same direction, more with (squared) distance.
     vec3 view = v_world - u_camera_pos;
     float fog = 1.0 - exp(-dot(view, view) * (1.0 / (kFogDistance * kFogDistance)));
+    // The ground is a finite square: its outer fifth fades into the sky as the fog would, so its
+    // edge melts into the horizon instead of cutting across it.
+    if (v_checker > 0.5) fog = max(fog, smoothstep(0.8, 1.0, max(abs(v_local.x), abs(v_local.y))));
     frag_color = output_color(mix(color, sky_gradient(view), fog));
 }

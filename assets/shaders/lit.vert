@@ -14,6 +14,7 @@ uniform mat4 u_view_proj; // world -> clip (projection * view)
 
 out vec3 v_world;  // world-space position, for lighting, fog and the ground checker
 out vec3 v_normal; // world-space normal, not yet unit length
+out vec2 v_local;  // unit-mesh x, y: on the ground, where in the square [-1, 1]^2 this point is
 // Constant over the instance: passed `flat` (not interpolated).
 flat out vec3 v_albedo;
 flat out vec4 v_material;
@@ -30,6 +31,7 @@ void main() {
     vec4 world = i_model * vec4(a_position, 1.0);
     v_world = world.xyz;
     v_normal = i_normal_matrix * a_normal;
+    v_local = a_position.xy;
     v_albedo = i_color.rgb;
     v_checker = i_color.a;
     v_material = i_material;

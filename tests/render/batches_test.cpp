@@ -51,6 +51,9 @@ TEST(LevelOfDetail, SegmentsKeepTheOutlineWithinTheError) {
         // and not wastefully many: one segment fewer would exceed it
         EXPECT_GT(r * (1.0f - std::cos(3.14159265f / float(n - 1))), 0.3f) << r;
     }
+    // Long straight edges on a big outline: at most 10 px each.
+    EXPECT_EQ(segments_for(100.0f, 0.6f, 10.0f), 63);
+    EXPECT_EQ(segments_for(100.0f, 0.6f), 29);
     const std::array<int, 4> levels{12, 24, 48, 64};
     EXPECT_EQ(choose_level(levels, 1.0f, 0.3f), 0u);    // a few pixels: the coarsest
     EXPECT_EQ(choose_level(levels, 30.0f, 0.3f), 1u);   // needs 23
