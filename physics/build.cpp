@@ -156,6 +156,7 @@ State initial_state(const Model& model, const std::vector<BodyDef>& bodies) {
         s.v[i] = b.velocity;
         s.w[i] = b.angular_velocity;
     }
+    s.x_carry.assign(n, Vec3::Zero()); // compensated.h
     return s;
 }
 

@@ -15,6 +15,7 @@
 // Known failure: the first-order orientation error makes the spin axis wander in the body, so the
 // energy drifts (either way) at O(h) per unit time although L is exact: the cheapest way to pass
 // an "L is conserved" test while being wrong (references.md section 2.2).
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -25,7 +26,7 @@ void integrate_euler_momentum(const Model& m, State& s, double h) {
     const bool loads = loads_on(m);
     for (int i : m.dynamic_bodies) {
         const Quat q = s.q[i];
-        s.x[i] += h * s.v[i]; // P / m = v
+        add_compensated(s.x[i], s.x_carry[i], h * s.v[i]); // P / m = v
         if (loads) s.v[i] += h * m.inv_mass[i] * net_force(m, i);
         s.q[i] = Quat(q.coeffs() + h * quat_derivative(s.w[i], q).coeffs()).normalized();
         if (!anisotropic(m, i)) {

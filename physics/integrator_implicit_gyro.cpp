@@ -24,6 +24,7 @@
 // Known failure: it damps tumbling: energy drains at a rate growing like (h |w|)^2 per step
 // (MuJoCo's figure for its analogous scheme, references.md section 2.1; Coumans, Bullet #346:
 // "the implicit integrator dampens the coriolis/gyroscopic effect").
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -47,7 +48,7 @@ void integrate_implicit_gyro(const Model& m, State& s, double h) {
             const Mat3 J = Mat3(I.asDiagonal()) + h * (skew(a) * I.asDiagonal() - skew(Ia));
             s.w[i] = q * (a - J.inverse() * (h * a.cross(Ia)));
         }
-        s.x[i] += h * s.v[i];
+        add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
         s.q[i] = (quat_exp(h * s.w[i]) * q).normalized();
     }
 }

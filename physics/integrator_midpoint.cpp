@@ -27,6 +27,7 @@
 // less than h |w|, so bodies run slightly late. One 3x3 Newton solve per body and step. Not
 // symplectic (on the Lie-Poisson structure the midpoint map is not Poisson), which matters
 // only for the statistics of long runs with torques.
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -75,7 +76,7 @@ void integrate_midpoint(const Model& m, State& s, double h) {
     const bool loads = loads_on(m);
     for (int i : m.dynamic_bodies) {
         if (loads) half_kick(m, s, i, h);
-        s.x[i] += h * s.v[i];
+        add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
         if (anisotropic(m, i)) {
             const Vec3 mb = m.inertia[i].cwiseProduct(to_body(s.q[i], s.w[i]));
             Vec3 m_bar;

@@ -15,6 +15,7 @@
 // Conserves: nothing exactly. Energy and world angular momentum drift as O(h^4) per unit time.
 // Known failure: explicit, so for h |w| beyond about 2.8 (the RK4 stability boundary on the
 // imaginary axis) the rotation blows up; the divergence check then stops the run.
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -44,7 +45,7 @@ void integrate_rk4(const Model& m, State& s, double h) {
     for (int i : m.dynamic_bodies) {
         const Vec3 accel = m.inv_mass[i] * net_force(m, i); // F = m a, constant over the step
         const Vec3 tau = net_torque(m, i);
-        const Vec3 x = s.x[i], v = s.v[i], w = s.w[i];
+        const Vec3 v = s.v[i], w = s.w[i];
         const Quat q = s.q[i];
 
         const Rates k1 = rates(m, i, v, q, w, accel, tau);
@@ -56,7 +57,7 @@ void integrate_rk4(const Model& m, State& s, double h) {
             rates(m, i, v + h * k3.dv, add_scaled(q, h, k3.dq), w + h * k3.dw, accel, tau);
 
         const double c = h / 6.0;
-        s.x[i] = x + c * (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx);
+        add_compensated(s.x[i], s.x_carry[i], c * (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx));
         s.v[i] = v + c * (k1.dv + 2.0 * k2.dv + 2.0 * k3.dv + k4.dv);
         s.w[i] = w + c * (k1.dw + 2.0 * k2.dw + 2.0 * k3.dw + k4.dw);
         const Quat dq(k1.dq.coeffs() + 2.0 * k2.dq.coeffs() + 2.0 * k3.dq.coeffs() +

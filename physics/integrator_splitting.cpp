@@ -29,6 +29,7 @@
 // Known failure: an O(h^2) energy oscillation and O(h^2) phase error that accumulates linearly in
 // time (Buss 2000: the McLachlan-Reich methods are "excellent at approximate energy-conservation
 // ... but are not as good at long-term accuracy"). Constant loads are exact for the translation.
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -90,7 +91,7 @@ void free_rotation_split(const Vec3& I, const Vec3& inv_I, Quat& q, Vec3& m, dou
 
 void splitting_step(const Model& m, State& s, int i, double h, bool loads) {
     if (loads) half_kick(m, s, i, h);
-    s.x[i] += h * s.v[i];
+    add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
     if (anisotropic(m, i)) {
         Vec3 mb = m.inertia[i].cwiseProduct(to_body(s.q[i], s.w[i]));
         free_rotation_split(m.inertia[i], m.inv_inertia[i], s.q[i], mb, h);

@@ -15,6 +15,7 @@
 // Known failure: energy and |L| grow on tumbling bodies; the term is quadratic in w, so a fast spin
 // runs away ("angular velocities blowing up", Avian #420; Bullet #357 advises the implicit form).
 // MuJoCo's Euler, the same scheme, gains 9 % energy in 5 s on its test box (references.md 2.1).
+#include "physics/compensated.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/rigid_body.h"
@@ -27,7 +28,7 @@ void integrate_symplectic_euler(const Model& m, State& s, double h) {
         if (loads) s.v[i] += h * m.inv_mass[i] * net_force(m, i);
         if (loads || anisotropic(m, i))
             s.w[i] += h * angular_acceleration(m, i, s.q[i], s.w[i], net_torque(m, i));
-        s.x[i] += h * s.v[i];
+        add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
         s.q[i] = (quat_exp(h * s.w[i]) * s.q[i]).normalized();
     }
 }

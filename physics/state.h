@@ -16,6 +16,9 @@ struct State {
     std::vector<Quat> q;   // orientation of the mass frame, body -> world, unit quaternion
     std::vector<Vec3> v;   // linear velocity of the centre of mass, world, m/s
     std::vector<Vec3> w;   // angular velocity, world, rad/s
+    // Kahan carry of x: the low-order bits the last position update could not hold, fed back into
+    // the next one (compensated.h), so tiny steps far from the origin do not lose their increments.
+    std::vector<Vec3> x_carry;
 
     double time(const Model& model) const;
 };
