@@ -1,6 +1,7 @@
 #pragma once
 // Runs the study's grid: for every problem, integrator and step count one accuracy run (errors at
-// the sample times against the reference) and one timing run (the stepping loop alone, repeated).
+// the sample times against the reference) and one timing run (the stepping loop alone, repeated,
+// timed by the thread's CPU clock so that other processes on the machine do not inflate it).
 // Work is shared by `threads` workers, one row at a time; every row is computed by one thread from
 // its own model and state, so the errors do not depend on the thread count (only the timings do).
 #include "app/study.h"
