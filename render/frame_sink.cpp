@@ -1,8 +1,8 @@
 // open_sink: picks the sink from the output name (see frame_sink.h for the rules).
 #include "render/frame_sink.h"
 
-#include "render/mp4_sink.h"
 #include "render/png_sink.h"
+#include "render/video_sink.h"
 
 extern "C" {
 #include <libavutil/log.h>
@@ -25,7 +25,8 @@ std::string lowercase(std::string text) {
 }
 
 const char* const kSupported =
-    "supported outputs: NAME.mp4 (H.264 video), NAME.png (one still), a directory such as "
+    "supported outputs: NAME.mp4 (H.264 video), NAME.webm (VP9 video), NAME.png (one still), a "
+    "directory such as "
     "frames/ (PNG sequence 000000.png, 000001.png ...), a pattern such as frames/%06d.png, or "
     "null (draw and discard, for timing)";
 
@@ -66,7 +67,7 @@ std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOption
         }
         return std::make_unique<PngSequenceSink>(std::move(*pattern), options);
     }
-    if (ext == ".mp4") return std::make_unique<Mp4Sink>(output, options);
+    if (ext == ".mp4" || ext == ".webm") return std::make_unique<VideoSink>(output, options);
     if (ext == ".png") return std::make_unique<PngStillSink>(output, options);
     throw SinkError("cannot write '" + output + "': unknown output type" +
                     (ext.empty() ? std::string() : " '" + ext + "'") + "; " + kSupported);

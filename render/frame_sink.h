@@ -1,6 +1,7 @@
 #pragma once
 // Where rendered frames go. The output name chooses the sink:
 //   *.mp4                      H.264 (libx264, yuv420p, BT.709 limited range) in MP4
+//   *.webm                     VP9 (libvpx) in WebM (video_sink.h)
 //   a directory (existing, or a name ending in '/')   PNG sequence dir/000000.png, 000001.png ...
 //   a name with a printf integer pattern, e.g. frames/%06d.png or shot_%04d.png   PNG sequence
 //   *.png (no pattern)         a single still: exactly one frame
@@ -43,7 +44,7 @@ struct SinkOptions {
     // than 3 at 1280x720, and it leaves the other core to the renderer.
     int threads = 1;
     // Extra libx264 settings, "key=value:key=value" (x264 --fullhelp), for experiments. Added
-    // after the sink's own "cpu-independent=1" (see mp4_sink.h), so they can override it.
+    // after the sink's own "cpu-independent=1" (see video_sink.h), so they can override it.
     std::string x264_params;
     PngWriteOptions png; // encoder and zlib level of PNG sinks
 };

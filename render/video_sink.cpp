@@ -1,4 +1,4 @@
-#include "render/mp4_sink.h"
+#include "render/video_sink.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -9,6 +9,7 @@ extern "C" {
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 
 namespace tumble::render {
 
@@ -46,31 +47,49 @@ constexpr std::array<const char*, 10> kPresets = {"ultrafast", "superfast", "ver
                                                   "fast",      "medium",    "slow",     "slower",
                                                   "veryslow",  "placebo"};
 
+// The two kinds of video file (see video_sink.h).
+struct Format {
+    const char* muxer;   // libavformat's name
+    const char* encoder; // libavcodec's name
+    int max_crf;
+    bool vp9;
+};
+
+Format format_of(const fs::path& output) {
+    std::string ext = output.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".webm") return {"webm", "libvpx-vp9", 63, true};
+    return {"mp4", "libx264", 51, false};
+}
+
 // Everything that can be checked before touching the disk, so a bad request leaves no trace.
-void check_options(const std::string& output, const SinkOptions& o) {
+void check_options(const std::string& output, const SinkOptions& o, const Format& format) {
     const auto fail = [&](const std::string& why) {
         throw SinkError("cannot write '" + output + "': " + why);
     };
     const std::string size = std::to_string(o.width) + "x" + std::to_string(o.height);
     if (o.width <= 0 || o.height <= 0) fail("video needs a frame size, got " + size);
     if (o.width % 2 != 0 || o.height % 2 != 0) {
-        fail("H.264 yuv420p needs even width and height, got " + size +
+        fail(std::string(format.vp9 ? "VP9" : "H.264") +
+             " yuv420p needs even width and height, got " + size +
              " (chroma is stored at half resolution); use e.g. " +
              std::to_string(o.width + o.width % 2) + "x" + std::to_string(o.height + o.height % 2));
     }
     if (o.fps <= 0) fail("fps must be positive, got " + std::to_string(o.fps));
-    if (o.crf < 0 || o.crf > 51) fail("crf must be 0..51, got " + std::to_string(o.crf));
+    if (o.crf < 0 || o.crf > format.max_crf)
+        fail("crf must be 0.." + std::to_string(format.max_crf) + ", got " + std::to_string(o.crf));
     if (o.threads < 0) fail("threads must be >= 0, got " + std::to_string(o.threads));
     if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) {
         std::string known;
         for (const char* p : kPresets) known += std::string(known.empty() ? "" : ", ") + p;
-        fail("unknown x264 preset '" + o.preset + "' (known: " + known + ")");
+        fail("unknown preset '" + o.preset + "' (known: " + known + ")");
     }
 }
 
 } // namespace
 
-struct Mp4Sink::Encoder {
+struct VideoSink::Encoder {
     std::unique_ptr<AVFormatContext, FormatFree> format;
     std::unique_ptr<AVCodecContext, CodecFree> codec;
     std::unique_ptr<SwsContext, ScalerFree> scaler;
@@ -78,6 +97,7 @@ struct Mp4Sink::Encoder {
     std::unique_ptr<AVPacket, PacketFree> packet;
     AVStream* stream = nullptr; // owned by `format`
     std::string output;         // for messages
+    Format kind;
 
     void check(int code, const char* what) const {
         if (code < 0) {
@@ -90,9 +110,24 @@ struct Mp4Sink::Encoder {
     void encode(const AVFrame* frame); // nullptr drains the encoder
 };
 
-void Mp4Sink::Encoder::open_codec(const SinkOptions& o) {
-    const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
-    if (!x264) throw SinkError("cannot write '" + output + "': this FFmpeg has no libx264 encoder");
+// libvpx's settings for a preset name: its speed/quality trade-off, and a constant quality.
+std::string vp9_settings(const SinkOptions& o, AVDictionary** settings) {
+    const auto at = std::find(kPresets.begin(), kPresets.end(), o.preset) - kPresets.begin();
+    const bool realtime = at <= 3; // ultrafast .. faster
+    const int cpu_used = realtime ? 8 : at <= 5 ? 4 : 2;
+    av_dict_set(settings, "deadline", realtime ? "realtime" : "good", 0);
+    av_dict_set_int(settings, "cpu-used", cpu_used, 0);
+    av_dict_set_int(settings, "crf", o.crf, 0);
+    av_dict_set(settings, "b", "0", 0); // quality-driven, no bitrate target
+    return std::string(realtime ? "realtime" : "good") + ", cpu-used " + std::to_string(cpu_used) +
+           ", crf " + std::to_string(o.crf);
+}
+
+void VideoSink::Encoder::open_codec(const SinkOptions& o) {
+    const AVCodec* x264 = avcodec_find_encoder_by_name(kind.encoder);
+    if (!x264)
+        throw SinkError("cannot write '" + output + "': this FFmpeg has no " +
+                        std::string(kind.encoder) + " encoder");
     codec.reset(avcodec_alloc_context3(x264));
     if (!codec) throw SinkError("cannot write '" + output + "': out of memory");
     AVCodecContext* c = codec.get();
@@ -110,6 +145,13 @@ void Mp4Sink::Encoder::open_codec(const SinkOptions& o) {
     c->thread_count = o.threads; // libx264's own default is 0 = per core; see SinkOptions
     c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER; // MP4 keeps SPS/PPS in the header (avcC)
     AVDictionary* settings = nullptr;
+    if (kind.vp9) {
+        const std::string what = "opening libvpx-vp9 (" + vp9_settings(o, &settings) + ")";
+        const int opened = avcodec_open2(c, x264, &settings);
+        av_dict_free(&settings);
+        check(opened, what.c_str());
+        return;
+    }
     av_dict_set(&settings, "preset", o.preset.c_str(), 0);
     av_dict_set_int(&settings, "crf", o.crf, 0);
     // Same algorithms whatever SIMD the CPU has, so the bytes do not depend on the machine.
@@ -123,13 +165,16 @@ void Mp4Sink::Encoder::open_codec(const SinkOptions& o) {
     check(opened, what.c_str());
 }
 
-void Mp4Sink::Encoder::open_container(const fs::path& temp) {
+void VideoSink::Encoder::open_container(const fs::path& temp) {
     // "file:" stops libavformat from reading a colon in the name as a protocol ("a:b.mp4"), and
     // the muxer is named because the temporary name does not end in .mp4.
     const std::string url = "file:" + temp.string();
     AVFormatContext* f = nullptr;
-    check(avformat_alloc_output_context2(&f, nullptr, "mp4", url.c_str()), "creating MP4 muxer");
+    check(avformat_alloc_output_context2(&f, nullptr, kind.muxer, url.c_str()),
+          "creating the muxer");
     format.reset(f);
+    // Matroska writes a random segment UID and the muxing date unless asked to be bit-exact.
+    if (kind.vp9) f->flags |= AVFMT_FLAG_BITEXACT;
     stream = avformat_new_stream(f, nullptr);
     if (!stream) throw SinkError("cannot write '" + output + "': out of memory");
     check(avcodec_parameters_from_context(stream->codecpar, codec.get()), "stream parameters");
@@ -141,10 +186,10 @@ void Mp4Sink::Encoder::open_container(const fs::path& temp) {
     AVDictionary* settings = nullptr;
     // faststart: at the end, rewrite the file with the index ("moov") first. That second pass
     // reopens the file by its name, which is why the name is set above.
-    av_dict_set(&settings, "movflags", "+faststart", 0);
+    if (!kind.vp9) av_dict_set(&settings, "movflags", "+faststart", 0);
     const int written = avformat_write_header(f, &settings);
     av_dict_free(&settings);
-    check(written, "writing the MP4 header");
+    check(written, "writing the file header");
 }
 
 // RGB -> YUV with the BT.709 matrix, from full-range RGB (0..255) to limited-range YUV (Y 16..235,
@@ -152,7 +197,7 @@ void Mp4Sink::Encoder::open_container(const fs::path& temp) {
 // rounding bias. SWS_BITEXACT asks for the same result from every SIMD code path: measured, the
 // output already matched with SIMD switched off, but the flag makes that a promise rather than
 // luck, which the determinism guarantee needs.
-void Mp4Sink::Encoder::open_scaler(const SinkOptions& o) {
+void VideoSink::Encoder::open_scaler(const SinkOptions& o) {
     scaler.reset(sws_getContext(o.width, o.height, AV_PIX_FMT_RGB24, o.width, o.height,
                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT,
                                 nullptr, nullptr, nullptr));
@@ -170,7 +215,7 @@ void Mp4Sink::Encoder::open_scaler(const SinkOptions& o) {
     check(av_frame_get_buffer(frame.get(), 0), "allocating a frame");
 }
 
-void Mp4Sink::Encoder::encode(const AVFrame* picture) {
+void VideoSink::Encoder::encode(const AVFrame* picture) {
     check(avcodec_send_frame(codec.get(), picture), "encoding");
     for (;;) {
         const int got = avcodec_receive_packet(codec.get(), packet.get());
@@ -185,9 +230,10 @@ void Mp4Sink::Encoder::encode(const AVFrame* picture) {
     }
 }
 
-Mp4Sink::Mp4Sink(const fs::path& output, const SinkOptions& options)
+VideoSink::VideoSink(const fs::path& output, const SinkOptions& options)
     : file_(output), options_(options) {
-    check_options(output.string(), options);
+    const Format kind = format_of(output);
+    check_options(output.string(), options, kind);
     try {
         ensure_writable_directory(output.parent_path());
     } catch (const FileError& e) {
@@ -195,6 +241,7 @@ Mp4Sink::Mp4Sink(const fs::path& output, const SinkOptions& options)
     }
     encoder_ = std::make_unique<Encoder>();
     encoder_->output = output.string();
+    encoder_->kind = kind;
     try {
         encoder_->open_codec(options);
         encoder_->open_container(file_.temp_path());
@@ -205,11 +252,11 @@ Mp4Sink::Mp4Sink(const fs::path& output, const SinkOptions& options)
     }
 }
 
-Mp4Sink::~Mp4Sink() {
+VideoSink::~VideoSink() {
     abort();
 }
 
-void Mp4Sink::write(const Image& image) {
+void VideoSink::write(const Image& image) {
     if (done_) throw SinkError("'" + describe() + "' is already finished");
     detail::check_frame(describe(), image, options_.width, options_.height);
     AVFrame* frame = encoder_->frame.get();
@@ -224,12 +271,12 @@ void Mp4Sink::write(const Image& image) {
     ++frames_;
 }
 
-void Mp4Sink::finish() {
+void VideoSink::finish() {
     if (done_) throw SinkError("'" + describe() + "' is already finished");
     try {
         if (frames_ == 0) throw SinkError("no frames were written to '" + describe() + "'");
         encoder_->encode(nullptr); // flush the frames x264 still holds (lookahead, B-frames)
-        encoder_->check(av_write_trailer(encoder_->format.get()), "finishing the MP4");
+        encoder_->check(av_write_trailer(encoder_->format.get()), "finishing the file");
         encoder_->check(avio_closep(&encoder_->format->pb), "closing the file");
         encoder_.reset();
         file_.commit();
@@ -243,7 +290,7 @@ void Mp4Sink::finish() {
     done_ = true;
 }
 
-void Mp4Sink::abort() noexcept {
+void VideoSink::abort() noexcept {
     if (done_) return;
     encoder_.reset(); // closes the file before it is deleted
     file_.discard();

@@ -1,7 +1,12 @@
 #pragma once
-// H.264 video in an MP4 file, through libavformat/libavcodec (libx264) and libswscale.
+// Video files through libavformat/libavcodec and libswscale, chosen by the output's extension:
+//   .mp4   H.264 (libx264) in MP4: the default, for slides, players and browsers.
+//   .webm  VP9 (libvpx) in WebM: for documentation pages that want an open format. --crf is
+//          VP9's quality (0..63, lower is better); --preset picks libvpx's speed (ultrafast ..
+//          faster: realtime, cpu-used 8; fast, medium: good, cpu-used 4; slower ones: cpu-used 2).
+//          WebM keeps time in milliseconds, so at 60 fps frame times are rounded to 1 ms.
 //
-// What the file holds, and why:
+// What an MP4 holds, and why (WebM likewise where it applies):
 //  * yuv420p, 8 bits: the only H.264 format every browser and phone decodes. Chroma is stored at
 //    half resolution in both directions, hence even width and height are required.
 //  * BT.709 colour, limited ("TV", 16..235) range, tagged as such in the stream: the HD
@@ -28,12 +33,12 @@
 
 namespace tumble::render {
 
-class Mp4Sink final : public FrameSink {
+class VideoSink final : public FrameSink {
   public:
     // Opens the encoder and the temporary file. Throws SinkError for odd or missing dimensions,
-    // bad fps/crf/preset, an unwritable directory, or a missing libx264.
-    Mp4Sink(const std::filesystem::path& output, const SinkOptions& options);
-    ~Mp4Sink() override;
+    // bad fps/crf/preset, an unwritable directory, or a missing encoder.
+    VideoSink(const std::filesystem::path& output, const SinkOptions& options);
+    ~VideoSink() override;
 
     void write(const Image& image) override;
     void finish() override;

@@ -1,5 +1,5 @@
-// The MP4 sink, checked by decoding its files with libavformat/libavcodec (what a player sees)
-// and by what it leaves on disk after finish(), abort() and errors.
+// The video sinks (MP4 and WebM), checked by decoding its files with libavformat/libavcodec (what a
+// player sees) and by what it leaves on disk after finish(), abort() and errors.
 #include "render/frame_sink.h"
 
 #include "test_support.h"
@@ -319,6 +319,8 @@ TEST(Mp4Sink, RejectsBadOptionsClearly) {
     SinkOptions bad_crf = video_options();
     bad_crf.crf = 60;
     EXPECT_THROW(open_sink(path.string(), bad_crf), SinkError);
+    bad_crf.crf = 64; // VP9's scale ends at 63
+    EXPECT_THROW(open_sink((path.parent_path() / "bad.webm").string(), bad_crf), SinkError);
     EXPECT_THROW(open_sink(path.string(), video_options(0, 0)), SinkError);
     EXPECT_TRUE(list_dir(path.parent_path()).empty());
 }
@@ -343,6 +345,28 @@ TEST(Mp4Sink, FfprobeAgrees) {
                              "duration=1.000000\n", "nb_read_frames=30\n"}) {
         EXPECT_NE(out.find(line), std::string::npos) << "missing " << line << "in\n" << out;
     }
+}
+
+// ---- WebM
+// ----------------------------------------------------------------------------------------
+
+TEST(WebmSink, PlaysAsVp9WithEveryFrameAndRepeatsExactly) {
+    const fs::path dir = fresh_artifact_dir();
+    for (const char* name : {"a.webm", "b.webm"}) {
+        auto sink = open_sink((dir / name).string(), video_options());
+        write_moving_frames(*sink, 64, 48);
+        sink->finish();
+    }
+    EXPECT_EQ(list_dir(dir), (std::vector<std::string>{"a.webm", "b.webm"}));
+    const VideoFacts v = probe(dir / "a.webm");
+    EXPECT_EQ(v.codec, "vp9");
+    EXPECT_EQ(v.pix_fmt, "yuv420p");
+    EXPECT_EQ(v.width, 64);
+    EXPECT_EQ(v.height, 48);
+    EXPECT_EQ(v.decoded_frames, 30);
+    EXPECT_NEAR(v.container_seconds, 1.0, 1.0 / 30);
+    EXPECT_EQ(v.space, AVCOL_SPC_BT709);
+    EXPECT_TRUE(read_bytes(dir / "a.webm") == read_bytes(dir / "b.webm"));
 }
 
 } // namespace
