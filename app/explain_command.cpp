@@ -1,5 +1,5 @@
 // `tumble explain`: prints the model that will run: bodies, loads, integrator, and which stages of
-// the step are on and why ("model only what a scene requires").
+// the step are on and why, contacts included ("model only what a scene requires").
 #include "app/commands.h"
 #include "app/scene_error.h"
 #include "app/scene_options.h"
@@ -43,6 +43,27 @@ PassCounts count_passes(const physics::Model& m) {
     return c;
 }
 
+// The contact stage and its reason (physics/can_touch.h), its substeps and sleeping.
+void print_contacts(const physics::Model& m) {
+    const physics::TouchReport& t = m.touch;
+    if (!m.passes.contacts) {
+        std::printf("  contacts       off: %s\n", t.why.c_str());
+        return;
+    }
+    int shapes = 0;
+    for (int i = 0; i < m.body_count(); ++i) shapes += !m.is_dynamic(i);
+    const int substeps = physics::substep_count(m.contact, m.dt);
+    std::printf("  contacts       on: %s (first of %lld pairs checked); %d bodies collide "
+                "(%d static, %zu dynamic); %d substep%s of %.3g ms per step; ",
+                t.why.c_str(), t.pairs_checked, m.body_count(), shapes, m.dynamic_bodies.size(),
+                substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps);
+    if (m.contact.sleeping)
+        std::printf("sleeping on (bodies slower than %g m/s for %g s stop)\n",
+                    m.contact.sleep_speed, m.contact.time_to_sleep);
+    else
+        std::printf("sleeping off\n");
+}
+
 void print_passes(const physics::Model& m) {
     const physics::Passes& p = m.passes;
     const PassCounts c = count_passes(m);
@@ -64,7 +85,7 @@ void print_passes(const physics::Model& m) {
                     c.anisotropic < c.dynamic ? " (the isotropic skip it: w x I w = 0)" : "");
     else
         std::printf("  gyroscopic     off: every dynamic body is isotropic (w x I w = 0)\n");
-    std::printf("  contacts       off: not in this build (no contact stage yet)\n");
+    print_contacts(m);
     const physics::IntegratorInfo& info = physics::integrator_info(m.integrator);
     std::printf("  integrate      %s (order %d): %s\n", std::string(info.name).c_str(), info.order,
                 std::string(info.summary).c_str());

@@ -17,6 +17,9 @@ glm::vec3 mesh_scale(const physics::Shape& s, const BodyLook& look) {
         return glm::vec3(s.half_extents.x(), s.half_extents.y(), s.half_extents.z());
     case physics::ShapeKind::Plane:
         return glm::vec3(0.5f * look.plane_extent, 0.5f * look.plane_extent, 1.0f);
+    case physics::ShapeKind::Capsule: // physics has them; the scene loader does not make them yet
+    case physics::ShapeKind::Mesh:
+        break;
     }
     return glm::vec3(1.0f);
 }
@@ -29,6 +32,9 @@ render::MeshKind mesh_kind(physics::ShapeKind k) {
         return render::MeshKind::Box;
     case physics::ShapeKind::Plane:
         return render::MeshKind::Plane;
+    case physics::ShapeKind::Capsule: // as in mesh_scale()
+    case physics::ShapeKind::Mesh:
+        break;
     }
     return render::MeshKind::Sphere;
 }

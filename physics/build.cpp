@@ -1,5 +1,7 @@
 #include "physics/build.h"
 
+#include "physics/build_contacts.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -37,6 +39,14 @@ void validate_shape(const Shape& s, Motion motion, int body) {
     case ShapeKind::Plane:
         require(motion == Motion::Static, body, "static", "a plane is infinite and must be static");
         break;
+    case ShapeKind::Capsule:
+        require(std::isfinite(s.radius) && s.radius > 0.0, body, "radius",
+                "capsule radius must be positive and finite");
+        require(std::isfinite(s.half_length) && s.half_length > 0.0, body, "length",
+                "capsule length must be positive and finite (a zero-length capsule is a sphere)");
+        break;
+    case ShapeKind::Mesh:
+        break; // validate_mesh_body() checks the triangles
     }
 }
 
@@ -86,8 +96,11 @@ void add_body(Model& m, const BodyDef& b, int i) {
     if (dynamic) {
         require(std::isfinite(b.mass) && b.mass > 0.0, i, "mass",
                 "mass of a dynamic body must be positive and finite");
-        moments = b.inertia.isZero(0.0) ? shape_principal_inertia(b.shape, b.mass)
-                                        : principal_axes(b.inertia, body_from_mass, i);
+        const Mat3 tensor = b.inertia.isZero(0.0) && b.shape.kind == ShapeKind::Mesh
+                                ? mesh_inertia(b, i)
+                                : b.inertia;
+        moments = tensor.isZero(0.0) ? shape_principal_inertia(b.shape, b.mass)
+                                     : principal_axes(tensor, body_from_mass, i);
         validate_moments(moments, i);
     }
     require(std::isfinite(b.gravity_scale), i, "gravity_scale", "gravity_scale must be finite");
@@ -102,7 +115,10 @@ void add_body(Model& m, const BodyDef& b, int i) {
     m.applied_force.push_back(b.applied_force);
     m.applied_torque.push_back(b.applied_torque);
     m.body_from_mass.push_back(body_from_mass);
-    m.com_offset.push_back(Vec3::Zero()); // primitive shapes: centre of mass at the origin
+    // Primitive shapes: centre of mass at the origin; a mesh: its centroid.
+    m.com_offset.push_back(b.shape.kind == ShapeKind::Mesh ? mesh_centroid(b, i)
+                                                           : Vec3(Vec3::Zero()));
+    add_contact_geometry(m, b, i);
     if (dynamic) m.dynamic_bodies.push_back(i);
 }
 
@@ -114,6 +130,7 @@ Passes decide_passes(const Model& m) {
             m.applied_force[i] != Vec3::Zero() || m.applied_torque[i] != Vec3::Zero();
         p.gyroscopic |= !m.isotropic[i];
     }
+    p.contacts = m.touch.can_touch; // can_touch.h
     return p;
 }
 
@@ -125,7 +142,10 @@ Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies) {
     m.gravity = world.gravity;
     m.dt = world.dt;
     m.integrator = world.integrator;
+    m.contact = world.contact;
+    validate_contact_settings(m.contact);
     for (int i = 0; i < static_cast<int>(bodies.size()); ++i) add_body(m, bodies[i], i);
+    m.touch = find_touching_pair(m, bodies);
     m.passes = decide_passes(m);
     return m;
 }
@@ -157,6 +177,12 @@ State initial_state(const Model& model, const std::vector<BodyDef>& bodies) {
         s.w[i] = b.angular_velocity;
     }
     s.x_carry.assign(n, Vec3::Zero()); // compensated.h
+    // Sized for every model, so that a model whose contacts are forced on (force_all_passes)
+    // steps a state built without them.
+    s.sleep.asleep.assign(n, 0);
+    s.sleep.slow_time.assign(n, 0.0);
+    s.sleep.island.assign(n, -1);
+    if (model.passes.contacts) check_static_overlaps(model, s);
     return s;
 }
 

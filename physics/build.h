@@ -1,9 +1,11 @@
 #pragma once
 // Building a Model and its initial State from plain descriptions. The app fills these from a
 // scene file; physics validates what only physics can judge and names the body and field.
+#include "physics/mesh.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@ struct WorldDef {
     Vec3 gravity = Vec3(0.0, 0.0, -9.81);
     double dt = 1.0 / 240.0;
     Integrator integrator = Integrator::Rk4;
+    ContactSettings contact; // sleeping, substeps, restitution threshold (contact_model.h)
 };
 
 struct BodyDef {
@@ -30,6 +33,11 @@ struct BodyDef {
     double gravity_scale = 1.0;
     Vec3 applied_force = Vec3::Zero();  // constant, world, N
     Vec3 applied_torque = Vec3::Zero(); // constant, world, N m
+    Material material;                  // friction, restitution (contact_model.h)
+    // Shape::mesh() only: the closed triangle mesh, body frame (shared by bodies that reuse it).
+    // Its centroid becomes the centre of mass and its inertia comes from the exact polyhedral
+    // integrals (mesh.h) unless `inertia` is given.
+    std::shared_ptr<const TriangleMesh> mesh;
 };
 
 // Thrown for a definition physics cannot simulate. `body` is the index (-1 for the world) and

@@ -9,6 +9,9 @@
 //   I_w^-1 v = R (I_body^-1 (R^T v)).
 // The body frame the user wrote (and the renderer draws) relates to the mass frame by the fixed
 // `body_from_mass` rotation and `com_offset`; for spheres and boxes both are identity.
+#include "physics/can_touch.h"
+#include "physics/contact_model.h"
+#include "physics/hull.h"
 #include "physics/integrator.h"
 #include "physics/math.h"
 #include "physics/shape.h"
@@ -26,6 +29,7 @@ struct Passes {
     bool gravity = false;       // some dynamic body feels a non-zero g * gravity_scale
     bool applied_loads = false; // some dynamic body has a constant applied force or torque
     bool gyroscopic = false;    // some dynamic body has anisotropic inertia (w x I w != 0)
+    bool contacts = false;      // two shapes can touch (can_touch.h; Model::touch says which)
 };
 
 struct Model {
@@ -47,6 +51,15 @@ struct Model {
     std::vector<Vec3> applied_torque;    // constant world-frame torque, N m
     std::vector<Quat> body_from_mass;    // rotation taking mass-frame axes to body-frame axes
     std::vector<Vec3> com_offset;        // centre of mass in the body frame, m
+
+    // Contacts (contact_model.h, hull.h); used only when passes.contacts is on.
+    std::vector<Material> material; // per body
+    std::vector<int> hull;          // per body: index into `hulls` (boxes, meshes), else -1
+    std::vector<ConvexHull> hulls;  // body-frame polyhedra
+    std::vector<double> swing;      // per body: farthest surface point a rotation moves, m
+                                    // (0 for a sphere, half length for a capsule, ...)
+    ContactSettings contact;
+    TouchReport touch; // why passes.contacts is on or off (can_touch.h)
 
     // Dynamic bodies only: the loops of the integrators run over this list.
     std::vector<int> dynamic_bodies;

@@ -7,6 +7,7 @@ void force_all_passes(Model& m) {
     m.passes.gravity = true;
     m.passes.applied_loads = true;
     m.passes.gyroscopic = true;
+    m.passes.contacts = true;
 }
 
 } // namespace tumble::physics

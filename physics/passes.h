@@ -21,8 +21,10 @@ inline bool anisotropic(const Model& m, int i) {
 }
 
 // The full pipeline: turns on every pass the integrators know (gravity, applied loads,
-// gyroscopic) and sets Model::all_passes, so that no body takes a shortcut. Results then agree
-// with the assembled step to round-off (tests/physics/passes_test.cpp says how closely and why).
+// gyroscopic) and the contact stage, and sets Model::all_passes, so that no body takes a shortcut.
+// Results then agree with the assembled step to round-off (tests/physics/passes_test.cpp says how
+// closely and why). The contact stage of a scene whose shapes cannot touch (can_touch.h) finds no
+// contact point and hands the whole step to the integrator: the same bits, plus its cost.
 void force_all_passes(Model& m);
 
 } // namespace tumble::physics

@@ -1,6 +1,7 @@
 #pragma once
 // State: what changes each step (MuJoCo's mjData), written only by the integrators. Plain flat
 // arrays, so saving a state is a copy and a restored copy continues bit-identically.
+#include "physics/contact_cache.h"
 #include "physics/math.h"
 
 #include <cstdint>
@@ -19,6 +20,10 @@ struct State {
     // Kahan carry of x: the low-order bits the last position update could not hold, fed back into
     // the next one (compensated.h), so tiny steps far from the origin do not lose their increments.
     std::vector<Vec3> x_carry;
+
+    // Contact stage only (contact_cache.h): last step's manifolds and impulses, and sleeping.
+    ContactCache contacts;
+    SleepState sleep;
 
     double time(const Model& model) const;
 };

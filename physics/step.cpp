@@ -1,3 +1,54 @@
+// One step of the simulation, assembled from what the scene contains (Model::passes).
+//
+// A scene whose shapes can never touch (one body, or none dynamic) runs only the named integrator
+// over the step h, then the finite check. Nothing else is built or run: no broad phase, no
+// buffers, no threads ("model only what a scene requires"; `tumble explain` says which).
+//
+// A scene with contacts runs the contact stage (contact_stage.h), which wraps the integrator in
+// the soft step of Box2D v3 (Catto, "Solver2D", 2024):
+//
+//   1. find     poses and bounding boxes grown by the distance each body can move in h; uniform-
+//               grid broad phase (broadphase.h); narrow phase (collide.h) with speculative
+//               points up to `margin = 1 cm + h |relative speed|` apart, so that anything that
+//               can meet within the step is a contact now: nothing tunnels through anything as
+//               long as it moves less than its own size in a step (a speed-aware bound, not a
+//               swept time-of-impact search; a 50 m/s ball against a 1 cm wall is a test).
+//               Points keep feature ids, and last step's impulses carry over to the same ids.
+//   2. wake     an awake body touching a sleeping one wakes the sleeper's island (sleep.cpp).
+//   3. prepare  anchors, effective masses, tangents; graph colouring (no colour holds two
+//               constraints on one moving body) fixes the solve order.
+//   4. impacts  restitution: approaching points that close within the step get pairwise
+//               Newton collisions, swept until no impact is left, energy-consistent with the bounce
+//               happening inside the step (contact_impacts.cpp).
+//   5. substeps n = ceil(h / (1/240 s)) times, with h' = h / n:
+//        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact
+//        b. solve      warm start, then one Gauss-Seidel sweep: soft non-penetration (pushes
+//                      overlap out as a stiff damped spring), Coulomb friction with two
+//                      tangents clamped to the disc mu lambda_n (contact_solver.h)
+//        c. integrate  the named integrator over h' for every awake body (rotation, gyroscopic
+//                      term, free flight); bodies in contact then move by x += h' v_solved
+//        d. relax      one more sweep without the push-out bias, so position correction never
+//                      becomes kinetic energy
+//   6. store    impulses into the State (warm start of the next step); sleeping (sleep.cpp).
+//
+// How contacts meet the integrators (5a-5c). The solver computes impulses from predicted
+// velocities v + h' F/m, the velocities the step would end with, and the integrator then adds the
+// loads itself, so every named integrator runs unchanged and keeps doing the rotation, the
+// gyroscopic torque and the free flight of bodies not in contact. One thing cannot be left to it:
+// an impulse applied at the start of a substep followed by constant gravity moves a body by
+// h' (v + dv) + beta h'^2 g, where beta depends on the integrator (0 for explicit Euler, 1/2 for
+// rk4 and the splittings, 1 for symplectic Euler), while the constraint assumed x += h' v_end.
+// A box resting on a ramp would creep by 1/2 g sin(a) h' per substep with rk4, about 7 cm in
+// 10 s. So for bodies in contact the translation is the symplectic x += h' v_solved, exactly what
+// the constraints were solved for, and resting stays resting with every integrator.
+//
+// Sleeping bodies are skipped: the integrator still visits them (its interface steps every
+// dynamic body), and their pose is restored after it; they are never solved.
+//
+// Threads (step(model, state, workspace) with a workspace of 2 or more): the broad and narrow
+// phases, preparation and each colour of each sweep are split into fixed ranges per worker;
+// every worker writes only its own outputs, so states are bit-identical for any thread count.
+// The integrator call is serial.
 #include "physics/step.h"
 
 #include "physics/integrators.h"
@@ -20,8 +71,10 @@ void check_finite(const Model& m, const State& s) {
     }
 }
 
-void step(const Model& m, State& s) {
-    const double h = m.dt;
+namespace {
+
+// The named integrator over one step or substep h (a switch per call, no virtual call per body).
+void integrate(const Model& m, State& s, double h) {
     switch (m.integrator) {
     case Integrator::Euler:
         integrate_euler(m, s, h);
@@ -48,6 +101,26 @@ void step(const Model& m, State& s) {
         integrate_splitting4(m, s, h);
         break;
     }
+}
+
+StepWorkspace& thread_workspace() {
+    thread_local StepWorkspace workspace(1);
+    return workspace;
+}
+
+} // namespace
+
+StepWorkspace::StepWorkspace(int threads) : pool(threads) {}
+
+void step(const Model& m, State& s) {
+    step(m, s, thread_workspace());
+}
+
+void step(const Model& m, State& s, StepWorkspace& workspace) {
+    if (m.passes.contacts)
+        workspace.contacts.step(m, s, integrate, workspace.pool);
+    else
+        integrate(m, s, m.dt);
     ++s.step;
     check_finite(m, s);
 }

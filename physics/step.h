@@ -1,8 +1,11 @@
 #pragma once
-// One step of the simulation pipeline, assembled from what the model contains:
-//   1. integrate  the model's named integrator moves every dynamic body by h = model.dt
+// One step of the simulation pipeline, assembled from what the model contains (step.cpp tells
+// the whole story):
+//   1. contacts   only when two shapes can touch: find, impacts, then substeps of
+//                 (solve, integrate, relax) around the named integrator (contact_stage.h)
+//      integrate  otherwise the model's named integrator moves every dynamic body by h = dt
 //   2. check      every dynamic body's state is finite, or the run stops here
-// (Contacts, when a scene has shapes that can touch, will slot in before 1 as a velocity stage.)
+#include "physics/contact_stage.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
@@ -23,6 +26,16 @@ struct DivergenceError : std::runtime_error {
 
 // Advances `state` by one step. Throws DivergenceError; `state` then holds the bad values.
 void step(const Model& model, State& state);
+
+// Scratch for step(): the contact stage's buffers and its worker threads (`threads` >= 1, the
+// caller being one of them). step(model, state) uses one single-threaded workspace per calling
+// thread. Results never depend on the workspace or on the thread count.
+struct StepWorkspace {
+    explicit StepWorkspace(int threads = 1);
+    ContactStage contacts;
+    ThreadPool pool;
+};
+void step(const Model& model, State& state, StepWorkspace& workspace);
 
 // Throws DivergenceError for the first dynamic body whose state is not finite.
 void check_finite(const Model& model, const State& state);

@@ -1,5 +1,6 @@
 #include "physics/exact/reference_scenes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tumble::exact {
@@ -69,13 +70,16 @@ ReferenceScene torque_free_spheres(int count) {
     ReferenceScene s;
     s.name = "torque-free-spheres";
     s.world.gravity = Vec3::Zero();
+    // Every pair separates: relative velocity 0.2/s d + (0, 0, dz) with d in the plane z = 0, so
+    // d . (relative velocity) = 0.2/s |d|^2 > 0 from the start.
+    const Vec3 centre(0.15 * (std::min(count, 40) - 1), 0.15 * ((count - 1) / 40), 0.0);
     for (int i = 0; i < count; ++i) {
         BodyDef b;
         b.shape = Shape::sphere(0.1);
         b.mass = 1.0;
         const double a = 0.7 * i;
         b.position = Vec3(0.3 * (i % 40), 0.3 * (i / 40), 0.0);
-        b.velocity = Vec3(0.1 * std::cos(a), 0.1 * std::sin(a), 0.0);
+        b.velocity = 0.2 * (b.position - centre) + Vec3(0.0, 0.0, 0.1 * std::sin(a));
         b.angular_velocity = Vec3(std::cos(a), std::sin(1.3 * a), 0.5) * 4.0;
         s.bodies.push_back(b);
     }

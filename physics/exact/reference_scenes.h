@@ -29,7 +29,10 @@ ReferenceScene tumbling_box_scene();
 ReferenceScene gravity_spin_scene();
 
 // `count` torque-free spheres without gravity, each spinning about a different axis: the case
-// where the assembled step skips the gravity, load and gyroscopic work entirely.
+// where the assembled step skips the gravity, load and gyroscopic work entirely. They start on a
+// grid in the plane z = 0 and fly apart (in-plane velocity 0.2/s times the offset from the
+// centre, plus a different vertical speed each), so no two ever meet: torque-free for ever, and
+// the scene runs no contact stage (physics/can_touch.h).
 ReferenceScene torque_free_spheres(int count);
 
 } // namespace tumble::exact

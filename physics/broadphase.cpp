@@ -1,0 +1,154 @@
+#include "physics/broadphase.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::physics {
+namespace {
+
+bool overlap(const Aabb& a, const Aabb& b) {
+    return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() &&
+           b.lo.y() <= a.hi.y() && a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
+}
+
+double largest_extent(const Aabb& b) {
+    return (b.hi - b.lo).maxCoeff();
+}
+
+// The forward half of the 26 neighbours (a neighbour is forward if its first non-zero offset,
+// in z, y, x order, is positive): each pair of neighbouring cells is visited from one side only.
+constexpr int kForward[13][3] = {{1, -1, -1}, {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0},
+                                 {1, 0, 1},   {1, 1, -1}, {1, 1, 0},  {1, 1, 1},  {0, 1, -1},
+                                 {0, 1, 0},   {0, 1, 1},  {0, 0, 1}};
+
+} // namespace
+
+std::uint32_t BroadPhase::Grid::bucket(const Cell& c) const {
+    // Large odd multipliers spread neighbouring cells over the table (Teschner et al. 2003).
+    const std::uint32_t h = static_cast<std::uint32_t>(c.x) * 73856093u ^
+                            static_cast<std::uint32_t>(c.y) * 19349663u ^
+                            static_cast<std::uint32_t>(c.z) * 83492791u;
+    return h & mask;
+}
+
+void BroadPhase::Grid::build(const std::vector<int>& members, const std::vector<Cell>& cell_of,
+                             const std::vector<Aabb>& boxes, std::vector<int>& cursor) {
+    std::uint32_t size = 16;
+    while (size < 2 * members.size()) size <<= 1;
+    mask = size - 1;
+    start.assign(size + 1, 0);
+    for (int i : members) ++start[bucket(cell_of[i]) + 1];
+    for (std::uint32_t b = 0; b < size; ++b) start[b + 1] += start[b];
+    cursor.assign(start.begin(), start.end() - 1);
+    body.resize(members.size());
+    cell.resize(members.size());
+    box.resize(members.size());
+    for (int i : members) { // in body order: stable within a bucket
+        const int k = cursor[bucket(cell_of[i])]++;
+        body[k] = i;
+        cell[k] = cell_of[i];
+        box[k] = boxes[i];
+    }
+}
+
+BroadPhase::Cell BroadPhase::cell_of(const Aabb& b) const {
+    // Clamped so that absurd coordinates cannot overflow; such bodies only share cells.
+    auto coord = [&](double lo, double hi) {
+        const double c = std::floor(0.5 * (lo + hi) / cell_);
+        return static_cast<std::int32_t>(std::clamp(c, -1e9, 1e9));
+    };
+    return {coord(b.lo.x(), b.hi.x()), coord(b.lo.y(), b.hi.y()), coord(b.lo.z(), b.hi.z())};
+}
+
+void BroadPhase::build(const Model& m, const std::vector<Aabb>& box,
+                       const std::vector<std::uint8_t>& awake) {
+    const int n = m.body_count();
+    large_.clear(), planes_.clear(), queries_.clear(), resting_.clear(), extent_.clear();
+    is_large_.assign(n, 0);
+    querying_.assign(n, 0);
+    for (int i = 0; i < n; ++i)
+        if (m.shape[i].kind != ShapeKind::Plane && m.is_dynamic(i))
+            extent_.push_back(largest_extent(box[i]));
+    // Cell edge: the largest extent among bodies at most 4x the median dynamic extent.
+    double limit = 1.0;
+    if (!extent_.empty()) {
+        auto mid = extent_.begin() + extent_.size() / 2;
+        std::nth_element(extent_.begin(), mid, extent_.end());
+        limit = 4.0 * *mid;
+    }
+    cell_ = 0.0;
+    std::vector<int>& small_awake = extent_int_;
+    small_awake.clear();
+    for (int i = 0; i < n; ++i) {
+        if (m.shape[i].kind == ShapeKind::Plane) {
+            planes_.push_back(i);
+            continue;
+        }
+        const bool querying = m.is_dynamic(i) && awake[i];
+        if (querying) queries_.push_back(i), querying_[i] = 1;
+        const double e = largest_extent(box[i]);
+        if (e > limit) {
+            large_.push_back(i);
+            is_large_[i] = 1;
+        } else {
+            cell_ = std::max(cell_, e);
+            (querying ? small_awake : resting_).push_back(i);
+        }
+    }
+    if (!(cell_ > 0.0)) cell_ = 1.0;
+    cell_of_body_.resize(n);
+    for (int i : small_awake) cell_of_body_[i] = cell_of(box[i]);
+    for (int i : resting_) cell_of_body_[i] = cell_of(box[i]);
+    awake_grid_.build(small_awake, cell_of_body_, box, cursor_);
+    rest_grid_.build(resting_, cell_of_body_, box, cursor_);
+}
+
+void BroadPhase::query(const Model& m, const std::vector<Aabb>& box,
+                       const std::vector<ShapePose>& pose, const std::vector<double>& plane_margin,
+                       int begin, int end, std::vector<std::uint64_t>& pairs) const {
+    auto add = [&](int i, int j) { pairs.push_back(i < j ? pair_key(i, j) : pair_key(j, i)); };
+    // Entries of grid g in cell c overlapping box bi, passing `keep`.
+    auto scan = [&](const Grid& g, const Cell& c, const Aabb& bi, int i, auto keep) {
+        const std::uint32_t b = g.bucket(c);
+        for (int k = g.start[b]; k < g.start[b + 1]; ++k)
+            if (g.cell[k] == c && keep(g.body[k]) && overlap(bi, g.box[k])) add(i, g.body[k]);
+    };
+    const bool resting = !rest_grid_.body.empty();
+    for (int q = begin; q < end; ++q) {
+        const int i = queries_[static_cast<std::size_t>(q)];
+        const Aabb& bi = box[i];
+        if (!is_large_[i]) {
+            const Cell c = cell_of_body_[i];
+            // Awake partners: own cell (higher index only) and the forward half.
+            scan(awake_grid_, c, bi, i, [i](int j) { return j > i; });
+            for (const auto& d : kForward)
+                scan(awake_grid_, {c.x + d[2], c.y + d[1], c.z + d[0]}, bi, i,
+                     [](int) { return true; });
+            // Resting partners: all 27 cells.
+            if (resting)
+                for (int dz = -1; dz <= 1; ++dz)
+                    for (int dy = -1; dy <= 1; ++dy)
+                        for (int dx = -1; dx <= 1; ++dx)
+                            scan(rest_grid_, {c.x + dx, c.y + dy, c.z + dz}, bi, i,
+                                 [](int) { return true; });
+        } else {
+            // A large body is in no cell: it meets the small resting bodies here (few, or it
+            // would not be large); small awake bodies find it in their scan of the large list.
+            for (std::size_t k = 0; k < rest_grid_.body.size(); ++k)
+                if (overlap(bi, rest_grid_.box[k])) add(i, rest_grid_.body[k]);
+        }
+        for (int j : large_) {
+            if (j == i) continue;
+            // Small i meets every large body; two large awake bodies meet once (lower index).
+            const bool report = !is_large_[i] || !querying_[j] || j > i;
+            if (report && overlap(bi, box[j])) add(i, j);
+        }
+        for (int p : planes_) {
+            const Vec3 n = pose[p].rotation.col(2);
+            if (plane_clearance(m, i, pose[i], n, n.dot(pose[p].position)) <= plane_margin[i])
+                add(i, p);
+        }
+    }
+}
+
+} // namespace tumble::physics

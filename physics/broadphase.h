@@ -1,0 +1,70 @@
+#pragma once
+// Broad phase: candidate pairs of bodies whose bounding boxes (grown by how far they can move in
+// one step) overlap, in time close to linear in the body count. A uniform grid, chosen over sweep
+// and prune by measurement (bench/broadphase_bench.cpp): a pile of equal spheres overlaps a sweep
+// axis in hundreds of bodies per slab, but a grid cell holds one or two.
+//
+// Every bounded body sits in the cell of its box centre, with the cell edge c at least the largest
+// box extent among "small" bodies; two boxes that overlap then have centres less than c apart on
+// every axis, so a body finds all its partners in the 3 x 3 x 3 cells around its own. Cells live
+// in a hash table (a counting sort by hash into flat arrays: no per-cell allocation), with each
+// body's cell and box copied next to it in sorted order so that a scan reads memory in sequence.
+// Awake dynamic bodies (the ones that look for partners) and the others (static, asleep) are in
+// two grids: two awake bodies meet through the forward half of the neighbourhood (13 cells and
+// the body's own), an awake and a resting body through all 27 cells of the resting grid, which is
+// skipped when empty. Bodies much larger than the typical one (a floor slab, a wall, a fast body's
+// long box) would force a huge cell, so they go to a short "large" list tested against everything
+// instead; planes are tested against every awake body by their clearance.
+#include "physics/collide.h"
+#include "physics/contact_cache.h"
+#include "physics/model.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tumble::physics {
+
+class BroadPhase {
+  public:
+    // Rebuilds the grids. `box` per body (grown for motion; ignored for planes), `awake` per body:
+    // only awake dynamic bodies look for partners.
+    void build(const Model& m, const std::vector<Aabb>& box,
+               const std::vector<std::uint8_t>& awake);
+
+    // Pairs (a < b) found by queries()[begin, end), appended to `pairs` in a fixed order (by
+    // querying body, then cell, then body order within the cell). Each pair is reported once.
+    void query(const Model& m, const std::vector<Aabb>& box, const std::vector<ShapePose>& pose,
+               const std::vector<double>& plane_margin, int begin, int end,
+               std::vector<std::uint64_t>& pairs) const;
+
+    const std::vector<int>& queries() const { return queries_; } // awake dynamic bodies
+    double cell_size() const { return cell_; }
+
+    struct Cell {
+        std::int32_t x, y, z;
+        bool operator==(const Cell&) const = default;
+    };
+
+  private:
+    struct Grid {
+        std::uint32_t mask = 0;
+        std::vector<int> start; // bucket b holds entries [start[b], start[b + 1])
+        std::vector<int> body;  // entries sorted by bucket, body order within a bucket
+        std::vector<Cell> cell; // per entry
+        std::vector<Aabb> box;  // per entry
+        void build(const std::vector<int>& members, const std::vector<Cell>& cell_of,
+                   const std::vector<Aabb>& boxes, std::vector<int>& cursor);
+        std::uint32_t bucket(const Cell& c) const;
+    };
+    Cell cell_of(const Aabb& b) const;
+
+    double cell_ = 1.0;
+    Grid awake_grid_, rest_grid_;
+    std::vector<Cell> cell_of_body_;
+    std::vector<int> large_, planes_, queries_, resting_, cursor_;
+    std::vector<std::uint8_t> is_large_, querying_;
+    std::vector<double> extent_;  // scratch
+    std::vector<int> extent_int_; // scratch
+};
+
+} // namespace tumble::physics

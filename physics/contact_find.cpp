@@ -1,0 +1,141 @@
+// Contact stage, part 1: which bodies touch. Poses and swept bounding boxes, the broad phase, the
+// narrow phase with warm-start matching against last step's contacts, and contacts of sleeping
+// bodies carried over unchanged (they have not moved, so their manifolds are still exact).
+#include "physics/contact_stage.h"
+
+#include <cmath>
+#include <limits>
+
+namespace tumble::physics {
+namespace {
+
+constexpr std::uint64_t kEmpty = std::numeric_limits<std::uint64_t>::max();
+
+std::uint32_t slot_hash(std::uint64_t key) {
+    key ^= key >> 33;
+    key *= 0xff51afd7ed558ccdULL; // MurmurHash3's 64-bit finaliser
+    key ^= key >> 33;
+    return static_cast<std::uint32_t>(key);
+}
+
+// Speculative margin of a pair: the base distance plus how far the gap can close in one step
+// (relative speed times h, and rotation sweeping points up to `swing` from the centre).
+double pair_margin(const Model& m, const State& s, int a, int b, double h) {
+    const double rel = (s.v[b] - s.v[a]).norm();
+    const double spin = s.w[a].norm() * m.swing[a] + s.w[b].norm() * m.swing[b];
+    return m.contact.speculative_distance + h * (rel + spin);
+}
+
+} // namespace
+
+void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& pool) {
+    const int n = m.body_count();
+    pose_.resize(n);
+    box_.resize(n);
+    plane_margin_.resize(n);
+    awake_.resize(n);
+    pool.for_ranges(n, 256, [&](int begin, int end, int) {
+        for (int i = begin; i < end; ++i) {
+            const bool dynamic = m.is_dynamic(i);
+            awake_[i] = dynamic && !s.sleep.asleep[i];
+            pose_[i] = shape_pose(m, s.x[i], s.q[i], i);
+            // Grow the box by half the base margin and by the distance the body can move.
+            const double reach = dynamic ? h_ * (s.v[i].norm() + s.w[i].norm() * m.swing[i]) : 0.0;
+            plane_margin_[i] = m.contact.speculative_distance + reach;
+            if (m.shape[i].kind == ShapeKind::Plane) continue;
+            const Aabb b = shape_aabb(m, i, pose_[i]);
+            const Vec3 grow = Vec3::Constant(0.5 * m.contact.speculative_distance + reach);
+            box_[i] = {b.lo - grow, b.hi + grow};
+        }
+    });
+}
+
+void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
+    Stopwatch clock;
+    broad_.build(m, box_, awake_);
+    const int workers = pool.size();
+    pairs_.resize(workers);
+    found_.resize(workers);
+
+    // Last step's manifolds by pair key (open addressing, at most half full).
+    const ContactCache& old = s.contacts;
+    std::uint32_t size = 16;
+    while (size < 2u * static_cast<std::uint32_t>(old.size())) size <<= 1;
+    old_keys_.assign(size, kEmpty);
+    old_slots_.resize(size);
+    for (int k = 0; k < old.size(); ++k) {
+        std::uint32_t slot = slot_hash(old.pair[k]) & (size - 1);
+        while (old_keys_[slot] != kEmpty) slot = (slot + 1) & (size - 1);
+        old_keys_[slot] = old.pair[k];
+        old_slots_[slot] = k;
+    }
+    auto find_old = [&](std::uint64_t key) {
+        std::uint32_t slot = slot_hash(key) & (size - 1);
+        while (old_keys_[slot] != kEmpty) {
+            if (old_keys_[slot] == key) return old_slots_[slot];
+            slot = (slot + 1) & (size - 1);
+        }
+        return -1;
+    };
+
+    const int queries = static_cast<int>(broad_.queries().size());
+    pool.run([&](int worker) {
+        int begin, end;
+        ThreadPool::range(queries, workers, worker, begin, end);
+        pairs_[worker].clear();
+        broad_.query(m, box_, pose_, plane_margin_, begin, end, pairs_[worker]);
+    });
+    profile_.broad = clock.lap();
+    pool.run([&](int worker) {
+        const std::vector<std::uint64_t>& pairs = pairs_[worker];
+        ContactCache& out = found_[worker];
+        out.clear();
+        Manifold man;
+        for (std::uint64_t key : pairs) {
+            const int a = pair_first(key), b = pair_second(key);
+            collide(m, a, pose_[a], b, pose_[b], pair_margin(m, s, a, b, h_), man);
+            if (man.count == 0) continue;
+            const int o = find_old(key);
+            out.pair.push_back(key);
+            out.normal.push_back(man.normal);
+            out.first.push_back(static_cast<int>(out.points.size()));
+            out.count.push_back(man.count);
+            for (int k = 0; k < man.count; ++k) {
+                CachedPoint p{man.points[k].point, man.points[k].separation, man.points[k].id, 0.0,
+                              Vec3::Zero()};
+                for (int j = 0; o >= 0 && j < old.count[o]; ++j) {
+                    const CachedPoint& q = old.points[old.first[o] + j];
+                    if (q.id == p.id) {
+                        p.normal_impulse = q.normal_impulse;
+                        p.friction_impulse = q.friction_impulse;
+                        break;
+                    }
+                }
+                out.points.push_back(p);
+            }
+        }
+    });
+
+    // Merge in worker order (the order a single thread would produce), then carry over the
+    // manifolds of pairs that no awake body looked at: both bodies asleep or static.
+    next_.clear();
+    stats_.pairs = 0;
+    auto append = [&](const ContactCache& from, int k) {
+        next_.pair.push_back(from.pair[k]);
+        next_.normal.push_back(from.normal[k]);
+        next_.first.push_back(static_cast<int>(next_.points.size()));
+        next_.count.push_back(from.count[k]);
+        for (int j = 0; j < from.count[k]; ++j)
+            next_.points.push_back(from.points[from.first[k] + j]);
+    };
+    for (int w = 0; w < workers; ++w) {
+        stats_.pairs += static_cast<int>(pairs_[w].size());
+        for (int k = 0; k < found_[w].size(); ++k) append(found_[w], k);
+    }
+    narrow_count_ = next_.size();
+    for (int k = 0; k < old.size(); ++k)
+        if (!awake_[pair_first(old.pair[k])] && !awake_[pair_second(old.pair[k])]) append(old, k);
+    profile_.narrow = clock.lap();
+}
+
+} // namespace tumble::physics

@@ -1,0 +1,126 @@
+// Impacts: restitution as sequential pairwise collisions at the start of the step.
+//
+// A point whose bodies approach faster than the restitution threshold, and whose gap will close
+// within this step if they keep flying freely, is an impact: the pair gets the normal impulse of
+// a two-body collision with Newton's coefficient e (and Coulomb friction limited by mu times that
+// impulse), as if nothing else touched them. Contacts are swept in colour order until no impact
+// is left (at most 8 sweeps), so a blow travels along a chain one collision at a time: Newton's
+// cradle sends one ball out for one ball in. Each pairwise collision conserves momentum exactly
+// and, with e <= 1, cannot add energy. (Guendelman, Bridson, Fedkiw, "Nonconvex rigid bodies with
+// stacking", 2003, separate collisions from resting contact in the same way; Box2D instead applies
+// e after the solve, which makes every touching pair of a chain one inelastic lump.) An impact
+// that would not bounce (e V below the threshold) is left to the solver, whose speculative
+// constraint brings the bodies exactly into contact by the end of the step.
+//
+// Bouncing inside the step. The surfaces meet at some t_i in (0, h], not at the start. With s0
+// the gap now, vn < 0 the normal velocity and a the relative normal acceleration of gravity and
+// the applied loads, free flight keeps E = 1/2 vn^2 - a s constant, so the speed at contact is
+//   V^2 = vn^2 - 2 a s0,   t_i = 2 s0 / (-vn + V)
+// and the bounce leaves with u = e V. Applied now, at gap s0, the pair leaves with the speed that
+// gives its normal motion the same energy:
+//   vn'^2 = u^2 + 2 a s0,
+// so a ball dropped on a floor reaches exactly e^2 times its previous apex, whatever the step.
+// It would also turn round s0 short of the surface (up to |vn| h: a 50 m/s ball would stop 20 cm
+// before a wall), so where one pair collides in isolation (neither body in another impact this
+// step) the pair is then moved along the normal, in inverse proportion to the masses, by
+//   ds = s_true - s_early,  s_true = u tau + 1/2 a tau^2 (tau = h - t_i),
+//   s_early = s0 + (u - a t_i) h + 1/2 a h^2,
+// and its normal velocity set to u - a t_i (so that the step ends with u + a tau), which puts it
+// where and how fast the bounce at t_i would have: touching, then leaving. (For one impacting
+// point; in a chain, or a face landing on several points at once, the corrections would interact,
+// and the turn-round stays early by at most |vn| h with the energy still exact.)
+#include "physics/contact_kernels.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::physics {
+namespace {
+
+constexpr double kArrival = 1e-4; // m
+
+double normal_acceleration(const SolverManifold& c, const SolverBodies& bodies) {
+    const Vec3 acc_a = c.move_a ? bodies.accel[c.a] : Vec3(Vec3::Zero());
+    const Vec3 acc_b = c.move_b ? bodies.accel[c.b] : Vec3(Vec3::Zero());
+    return c.normal.dot(acc_b - acc_a);
+}
+
+} // namespace
+
+bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
+                     const SolverContext& ctx, State& s) {
+    const BodyView A = body_view(bodies, c.a, c.move_a);
+    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const Vec3& n = c.normal;
+    const double an = normal_acceleration(c, bodies);
+    const double h = ctx.step_h, threshold = ctx.restitution_threshold;
+    Velocity va = load(s, c.a), vb = load(s, c.b);
+    bool any = false;
+    for (int k = 0; k < c.count; ++k) {
+        SolverPoint& p = points[k];
+        const double vn = n.dot(relative_velocity(va, vb, p.ra, p.rb));
+        if (vn >= -threshold) continue;
+        const double s0 = std::max(p.separation0, 0.0);
+        // Closes within the step? The gap at its end under the symplectic update the solver uses
+        // (s0 + vn h + a h^2, at most 1/2 a h^2 from free flight), with 0.1 mm to spare: a pair
+        // arriving just at the end would otherwise reach the relax sweep, which stops it
+        // inelastically (a cradle would move as one lump).
+        if (s0 + vn * h + an * h * h > kArrival) continue;
+        const double speed = std::sqrt(std::max(vn * vn - 2.0 * an * s0, 0.0)); // V
+        const double out = c.restitution * speed;                               // u
+        if (out < threshold) continue; // no bounce: the solver's speculative contact stops it
+        const double target = std::sqrt(std::max(out * out + 2.0 * an * s0, 0.0));
+        const double impulse = p.normal_mass * (target - vn);
+        if (p.impact_normal == 0.0) p.impact_vn = vn; // the approach, for the in-step shift
+        p.impact_normal += impulse;
+        apply(A, va, p.ra, -impulse * n);
+        apply(B, vb, p.rb, impulse * n);
+        any = true;
+
+        // Friction during the impact, within this impact's Coulomb cone.
+        const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
+        double l1 = p.impact_friction[0], l2 = p.impact_friction[1];
+        coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * p.impact_normal, l1, l2);
+        const Vec3 f = (l1 - p.impact_friction[0]) * c.t1 + (l2 - p.impact_friction[1]) * c.t2;
+        p.impact_friction[0] = l1;
+        p.impact_friction[1] = l2;
+        apply(A, va, p.ra, -f);
+        apply(B, vb, p.rb, f);
+    }
+    store(s, c.a, c.move_a, va);
+    store(s, c.b, c.move_b, vb);
+    return any;
+}
+
+bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
+                    const SolverContext& ctx, State& s, double& ds) {
+    int hits = 0, k = 0;
+    for (int j = 0; j < c.count; ++j)
+        if (points[j].impact_normal != 0.0) ++hits, k = j;
+    if (hits != 1) return false;
+    const SolverPoint& p = points[k];
+    const double an = normal_acceleration(c, bodies);
+    const double h = ctx.step_h;
+    const double s0 = std::max(p.separation0, 0.0), vn = p.impact_vn;
+    const double speed = std::sqrt(std::max(vn * vn - 2.0 * an * s0, 0.0));
+    const double t_hit = 2.0 * s0 / (-vn + speed);
+    const double tau = std::max(h - t_hit, 0.0);
+    const double u = c.restitution * speed;
+    // Velocity now such that the step ends with u + a tau, as after a bounce at t_hit.
+    const BodyView A = body_view(bodies, c.a, c.move_a);
+    const BodyView B = body_view(bodies, c.b, c.move_b);
+    Velocity va = load(s, c.a), vb = load(s, c.b);
+    const double now = c.normal.dot(relative_velocity(va, vb, p.ra, p.rb));
+    const double target = u - an * t_hit;
+    const double impulse = p.normal_mass * (target - now);
+    apply(A, va, p.ra, -impulse * c.normal);
+    apply(B, vb, p.rb, impulse * c.normal);
+    store(s, c.a, c.move_a, va);
+    store(s, c.b, c.move_b, vb);
+    const double s_true = std::max(u * tau + 0.5 * an * tau * tau, 0.0);
+    const double s_early = s0 + target * h + 0.5 * an * h * h;
+    ds = s_true - s_early;
+    return true;
+}
+
+} // namespace tumble::physics

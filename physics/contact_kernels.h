@@ -1,0 +1,92 @@
+#pragma once
+// Small inline helpers shared by the contact solver's kernels: a body's mass properties as the
+// solver sees them (zero for a body that does not move) and velocity load/apply/store.
+#include "physics/contact_solver.h"
+
+#include <cmath>
+
+namespace tumble::physics {
+
+// A body as the solver sees it. Isotropic bodies (spheres, cubes) have I_w^-1 = (1/I) 1 in any
+// orientation: a scalar, no matrix product (most contacts of a sphere pile).
+struct BodyView {
+    double inv_mass;
+    double inv_i;            // isotropic: the scalar 1/I
+    const Mat3* inv_inertia; // otherwise: I_w^-1 (null for isotropic)
+    bool movable, rotates;
+};
+
+inline BodyView body_view(const SolverBodies& b, int i, bool movable) {
+    if (!movable) return {0.0, 0.0, nullptr, false, false};
+    const bool iso = b.isotropic[i] != 0;
+    return {b.inv_mass[i], b.inv_i[i], iso ? nullptr : &b.inv_inertia[i], true, b.rotates[i] != 0};
+}
+
+// I_w^-1 v
+inline Vec3 inv_inertia_times(const BodyView& b, const Vec3& v) {
+    return b.inv_inertia ? Vec3(*b.inv_inertia * v) : Vec3(b.inv_i * v);
+}
+
+struct Velocity {
+    Vec3 v, w;
+};
+
+// Static and sleeping bodies have v = w = 0 in the state, so reading them is always right.
+inline Velocity load(const State& s, int i) {
+    return {s.v[i], s.w[i]};
+}
+
+inline void store(State& s, int i, bool movable, const Velocity& vel) {
+    if (!movable) return;
+    s.v[i] = vel.v;
+    s.w[i] = vel.w;
+}
+
+inline Vec3 relative_velocity(const Velocity& a, const Velocity& b, const Vec3& ra,
+                              const Vec3& rb) {
+    return b.v + b.w.cross(rb) - a.v - a.w.cross(ra);
+}
+
+// Impulse p at anchor r: v += p / m, w += I^-1 (r x p). No-op for a body that does not move.
+inline void apply(const BodyView& body, Velocity& vel, const Vec3& r, const Vec3& p) {
+    if (!body.movable) return;
+    vel.v += body.inv_mass * p;
+    vel.w += inv_inertia_times(body, r.cross(p));
+}
+
+// k = mA^-1 + mB^-1 + (rA x d) . IA^-1 (rA x d) + (rB x d) . IB^-1 (rB x d)
+inline double effective_mass(const BodyView& a, const BodyView& b, const Vec3& ra, const Vec3& rb,
+                             const Vec3& d) {
+    const Vec3 rad = ra.cross(d), rbd = rb.cross(d);
+    return a.inv_mass + b.inv_mass + rad.dot(inv_inertia_times(a, rad)) +
+           rbd.dot(inv_inertia_times(b, rbd));
+}
+
+// Coulomb friction at one point, for the accumulated tangent impulse (l1, l2) and the tangential
+// slip velocity (v1, v2). Sticking: the impulse that stops the slip exactly, l - K^-1 v with K the
+// 2x2 effective-mass matrix of the two tangents, if it lies in the disc |l| <= limit. Otherwise
+// sliding: l - m v with the scalar m = 1 / (largest eigenvalue of K), put back on the disc. The
+// usual "scale the sticking impulse back onto the disc" settles along K^-1 v instead of -v when K
+// couples the tangents (any point off the line through the centre of mass, a box corner): a box
+// sliding down a 30 degree ramp then felt 10% less friction than mu N. With a scalar mass the
+// fixed point of sliding is exactly -limit v / |v| (maximal dissipation). A scalar mass also for
+// sticking would converge slowly where K is far from round: a pyramid of boxes kept jiggling.
+inline void coulomb(const TangentMass& mass, double v1, double v2, double limit, double& l1,
+                    double& l2) {
+    const double s1 = l1 - (mass.k11 * v1 + mass.k12 * v2);
+    const double s2 = l2 - (mass.k12 * v1 + mass.k22 * v2);
+    if (s1 * s1 + s2 * s2 <= limit * limit) {
+        l1 = s1, l2 = s2;
+        return;
+    }
+    l1 -= mass.scalar * v1;
+    l2 -= mass.scalar * v2;
+    const double len2 = l1 * l1 + l2 * l2;
+    if (len2 > limit * limit) {
+        const double scale = limit / std::sqrt(len2);
+        l1 *= scale;
+        l2 *= scale;
+    }
+}
+
+} // namespace tumble::physics

@@ -1,0 +1,57 @@
+#pragma once
+// What the contact stage reads from the model: materials per body and the world's contact
+// settings. Filled for every scene; used only when Model::passes.contacts is on.
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::physics {
+
+// Per-body surface material. A contact between bodies A and B uses
+//   friction    mu = sqrt(mu_A mu_B)    (geometric mean: either surface being frictionless wins)
+//   restitution e  = max(e_A, e_B)      (a bouncy ball bounces on any floor)
+// (Box2D's default mixing rules, so scenes ported from it behave the same.)
+struct Material {
+    double friction = 0.5;    // Coulomb coefficient, >= 0
+    double restitution = 0.0; // Newton's coefficient, 0 (no bounce) .. 1 (elastic)
+};
+
+inline double mix_friction(const Material& a, const Material& b) {
+    return std::sqrt(a.friction * b.friction);
+}
+inline double mix_restitution(const Material& a, const Material& b) {
+    return std::max(a.restitution, b.restitution);
+}
+
+struct ContactSettings {
+    // Scene switches (docs/scene-format.md, "world").
+    bool sleeping = true;               // bodies at rest for time_to_sleep stop being simulated
+    int substeps = 0;                   // per step; 0: the fewest giving h / substeps <= 1/480 s
+    double restitution_threshold = 0.5; // m/s: slower impacts do not bounce (resting stays put)
+
+    // Solver constants (the soft step of Box2D v3, see contact_solver.h).
+    // Stiffness of the soft contact, as a frequency: a quarter of the substep rate, the stiffest
+    // that stays stable with one sweep per substep (120 Hz at 480 substeps per second). A load F
+    // then sinks a contact by F / (m_eff (2 pi hertz)^2): 0.3 mm for a 5 cm sphere under ten
+    // times its weight.
+    double contact_hertz_fraction = 0.25; // of the substep rate
+    // Damping ratio of the soft contact. Higher: the response is more nearly rigid and the spring
+    // pushes overlap out more slowly (at bias_rate s, bias_rate = omega / (2 zeta + h omega),
+    // 25 per second at 120 Hz), while the sag under a load stays F / (m_eff omega^2) whatever
+    // zeta is. Measured (tests/physics/contact_physics_test.cpp, at h, 2h and 4h): with Box2D's
+    // 10 a pyramid of 20 boxes keeps jiggling (0.05 rad/s), from 15 on it settles; a tower of 10
+    // cubes drifts under 2 mm in 10 s at 15 but up to 13 mm at 25; the 8000-sphere pile keeps
+    // every overlap under 1 mm.
+    double contact_damping_ratio = 15.0;
+    double max_push_speed = 3.0;        // m/s: fastest speed at which overlap is pushed out
+    double speculative_distance = 0.01; // m: contacts this far apart are kept (plus speed * h)
+    double sleep_speed = 0.05;          // m/s: a body slower than this (at any point) may sleep
+    double time_to_sleep = 0.5;         // s
+};
+
+// Substeps of one step h: settings.substeps, or the fewest with h / n <= 1/480 s.
+inline int substep_count(const ContactSettings& s, double h) {
+    if (s.substeps > 0) return s.substeps;
+    return std::max(1, static_cast<int>(std::ceil(h * 480.0 - 1e-9)));
+}
+
+} // namespace tumble::physics

@@ -1,0 +1,126 @@
+#include "physics/contact_solver.h"
+
+#include "physics/contact_kernels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tumble::physics {
+
+Softness make_softness(double hertz, double zeta, double h) {
+    if (hertz <= 0.0) return {};
+    const double omega = 2.0 * std::numbers::pi * hertz;
+    const double a1 = 2.0 * zeta + h * omega;
+    const double a2 = h * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
+                      const State& s) {
+    const BodyView A = body_view(bodies, c.a, c.move_a);
+    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const Vec3& n = c.normal;
+    // Tangents: a fixed perpendicular of n (Box3D's choice of axis), and n x t1.
+    c.t1 = std::abs(n.x()) >= 0.57735 ? Vec3(n.y(), -n.x(), 0.0).normalized()
+                                      : Vec3(0.0, n.z(), -n.y()).normalized();
+    c.t2 = n.cross(c.t1);
+    for (int k = 0; k < c.count; ++k) {
+        SolverPoint& p = points[k];
+        // p.ra/p.rb hold the world contact point on entry (see contact_step.cpp).
+        const Vec3 point = p.ra;
+        p.ra = point - s.x[c.a];
+        p.rb = point - s.x[c.b];
+        p.base_separation = p.separation0 - n.dot(p.rb - p.ra);
+        p.normal_mass = 1.0 / effective_mass(A, B, p.ra, p.rb, n);
+        const Vec3 a1 = p.ra.cross(c.t1), a2 = p.ra.cross(c.t2);
+        const Vec3 b1 = p.rb.cross(c.t1), b2 = p.rb.cross(c.t2);
+        const Vec3 ia1 = inv_inertia_times(A, a1), ib1 = inv_inertia_times(B, b1);
+        const double m = A.inv_mass + B.inv_mass;
+        const double k11 = m + a1.dot(ia1) + b1.dot(ib1);
+        const double k22 = m + a2.dot(inv_inertia_times(A, a2)) + b2.dot(inv_inertia_times(B, b2));
+        const double k12 = a2.dot(ia1) + b2.dot(ib1);
+        // K^-1 and 1 / (largest eigenvalue of K), K = [[k11, k12], [k12, k22]] (see coulomb()).
+        const double det = k11 * k22 - k12 * k12;
+        const double inv_det = det > 0.0 ? 1.0 / det : 0.0;
+        const double mean = 0.5 * (k11 + k22), half = 0.5 * (k11 - k22);
+        p.tangent_mass = {k22 * inv_det, -k12 * inv_det, k11 * inv_det,
+                          1.0 / (mean + std::sqrt(half * half + k12 * k12))};
+        p.impact_normal = p.impact_vn = 0.0;
+        p.impact_friction[0] = p.impact_friction[1] = 0.0;
+    }
+}
+
+void warm_start(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
+                State& s) {
+    const BodyView A = body_view(bodies, c.a, c.move_a);
+    const BodyView B = body_view(bodies, c.b, c.move_b);
+    Velocity va = load(s, c.a), vb = load(s, c.b);
+    for (int k = 0; k < c.count; ++k) {
+        const SolverPoint& p = points[k];
+        const Vec3 impulse = p.normal_impulse * c.normal + p.friction_impulse[0] * c.t1 +
+                             p.friction_impulse[1] * c.t2;
+        apply(A, va, p.ra, -impulse);
+        apply(B, vb, p.rb, impulse);
+    }
+    store(s, c.a, c.move_a, va);
+    store(s, c.b, c.move_b, vb);
+}
+
+void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
+                    const SolverContext& ctx, bool use_bias, State& s) {
+    const BodyView A = body_view(bodies, c.a, c.move_a);
+    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const Softness& soft = c.move_a && c.move_b ? ctx.soft : ctx.soft_static;
+    Velocity va = load(s, c.a), vb = load(s, c.b);
+    const Vec3& n = c.normal;
+    // Motion of each anchor since the start of the step: d = delta + (turn - 1) r.
+    const Vec3 da = A.movable ? bodies.delta[c.a] : Vec3(Vec3::Zero());
+    const Vec3 db = B.movable ? bodies.delta[c.b] : Vec3(Vec3::Zero());
+
+    // Non-penetration.
+    for (int k = 0; k < c.count; ++k) {
+        SolverPoint& p = points[k];
+        const Vec3 ta = A.rotates ? Vec3(bodies.turn[c.a] * p.ra) : p.ra;
+        const Vec3 tb = B.rotates ? Vec3(bodies.turn[c.b] * p.rb) : p.rb;
+        const double sep = p.base_separation + n.dot(db + tb - da - ta);
+        double bias = 0.0, mass_scale = 1.0, impulse_scale = 0.0;
+        if (sep > 0.0) {
+            // Speculative: let the gap close exactly by the end of the substep, no faster. Only
+            // in the solve: relaxing at the end of a substep would brake the approach already
+            // (Box2D does), and the impact at the next step would see the braked speed.
+            if (!use_bias) continue;
+            bias = sep * ctx.inv_h;
+        } else if (use_bias) {
+            bias = std::max(soft.bias_rate * sep, -ctx.max_push_speed);
+            mass_scale = soft.mass_scale;
+            impulse_scale = soft.impulse_scale;
+        }
+        const double vn = n.dot(relative_velocity(va, vb, p.ra, p.rb));
+        double delta = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+        const double next = std::max(p.normal_impulse + delta, 0.0);
+        delta = next - p.normal_impulse;
+        p.normal_impulse = next;
+        apply(A, va, p.ra, -delta * n);
+        apply(B, vb, p.rb, delta * n);
+    }
+
+    // Friction: both tangent directions at once, within the disc |lambda_t| <= mu lambda_n.
+    for (int k = 0; k < c.count; ++k) {
+        SolverPoint& p = points[k];
+        const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
+        double l1 = p.friction_impulse[0], l2 = p.friction_impulse[1];
+        coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * p.normal_impulse, l1, l2);
+        const Vec3 impulse =
+            (l1 - p.friction_impulse[0]) * c.t1 + (l2 - p.friction_impulse[1]) * c.t2;
+        p.friction_impulse[0] = l1;
+        p.friction_impulse[1] = l2;
+        apply(A, va, p.ra, -impulse);
+        apply(B, vb, p.rb, impulse);
+    }
+    store(s, c.a, c.move_a, va);
+    store(s, c.b, c.move_b, vb);
+}
+
+} // namespace tumble::physics
