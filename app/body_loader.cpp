@@ -2,39 +2,17 @@
 
 #include "app/materials.h"
 #include "app/scene_values.h"
+#include "app/shape_loader.h"
 
 namespace tumble::app {
 namespace {
 
 using physics::Mat3;
-using physics::Shape;
 using physics::Vec3;
 
 // A pleasant default palette (sRGB), cycled by body index when a body has no "color".
 const glm::vec3 kPalette[] = {{0.90f, 0.35f, 0.25f}, {0.25f, 0.55f, 0.85f}, {0.95f, 0.75f, 0.20f},
                               {0.35f, 0.75f, 0.45f}, {0.65f, 0.40f, 0.80f}, {0.95f, 0.55f, 0.70f}};
-
-Shape read_shape(JsonReader r, BodyLook& look) {
-    const std::string type = r.field("type").string();
-    Shape s;
-    if (type == "sphere") {
-        s = Shape::sphere(r.field("radius").positive("a positive radius in metres"));
-    } else if (type == "box") {
-        const JsonReader size = r.field("size");
-        const Vec3 full = read_vec3(size, "box edge lengths [x, y, z] in metres");
-        if (full.minCoeff() <= 0.0)
-            size.fail("expected positive box edge lengths, got " + size.value().dump());
-        s = Shape::box(0.5 * full);
-    } else if (type == "plane") {
-        s = Shape::plane();
-        if (auto e = r.optional("extent"))
-            look.plane_extent = static_cast<float>(e->positive("a positive drawn size in metres"));
-    } else {
-        r.field("type").fail("unknown shape \"" + type + "\"; expected one of: sphere, box, plane");
-    }
-    r.finish();
-    return s;
-}
 
 // Inertia about the centre of mass in body axes: [I1, I2, I3] (principal along the body axes)
 // or a symmetric 3x3 [[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]], kg m^2.
@@ -54,7 +32,7 @@ void read_mass(JsonReader& r, physics::BodyDef& b) {
     auto mass = r.optional("mass");
     auto density = r.optional("density");
     if (mass && density) density->fail("give either \"mass\" or \"density\", not both");
-    const double volume = physics::shape_volume(b.shape);
+    const double volume = body_volume(b);
     if (mass)
         b.mass = mass->positive("a positive mass in kilograms");
     else
@@ -70,10 +48,10 @@ physics::Quat plane_orientation(const JsonReader& r) {
 
 } // namespace
 
-void read_body(JsonReader r, int index, physics::BodyDef& b, BodyLook& look) {
+void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& b, BodyLook& look) {
     look.name = r.has("name") ? r.field("name").string() : "body " + std::to_string(index);
     look.color = kPalette[index % std::size(kPalette)];
-    b.shape = read_shape(r.field("shape"), look);
+    read_shape(r.field("shape"), shapes, b, look); // app/shape_loader.h
     const bool plane = b.shape.kind == physics::ShapeKind::Plane;
     b.motion = plane ? physics::Motion::Static : physics::Motion::Dynamic;
     if (auto s = r.optional("static")) {
@@ -110,7 +88,8 @@ void read_body(JsonReader r, int index, physics::BodyDef& b, BodyLook& look) {
     if (auto t = r.optional("torque"))
         b.applied_torque = read_vec3(*t, "a torque [x, y, z] in N m");
     if (auto c = r.optional("color")) look.color = read_color(*c);
-    if (auto m = r.optional("material")) look.material = read_material(*m); // app/materials.h
+    if (auto m = r.optional("material")) // look, friction, restitution (app/materials.h)
+        look.material = read_material(*m, b.shape.kind, b.material);
     r.finish();
 }
 

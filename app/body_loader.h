@@ -2,9 +2,11 @@
 // Reads one entry of the scene's "bodies" array into a physics BodyDef and its look.
 #include "app/json_reader.h"
 #include "app/scene.h"
+#include "app/shape_loader.h"
 
 namespace tumble::app {
 
-void read_body(JsonReader r, int index, physics::BodyDef& body, BodyLook& look);
+void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& body,
+               BodyLook& look);
 
 } // namespace tumble::app

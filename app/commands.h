@@ -19,6 +19,7 @@ struct SceneOptions {
     std::optional<std::string> integrator;
     std::optional<double> duration;
     std::optional<double> dt;
+    int threads = 1; // physics threads for the contact stage (same states for any count)
     bool quiet = false;
 };
 

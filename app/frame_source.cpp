@@ -12,7 +12,7 @@ FrameSource::FrameSource(const Scene& scene, const Timeline& timeline, Simulatio
       done_(first > last), initial_(physics::diagnose(sim.model, sim.state)) {}
 
 void FrameSource::step_one_frame() {
-    for (int s = 0; s < timeline_.steps_per_frame; ++s) physics::step(sim_.model, sim_.state);
+    for (int s = 0; s < timeline_.steps_per_frame; ++s) sim_.step();
     ++k_;
 }
 

@@ -16,6 +16,10 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o) {
     cmd->add_option("--integrator", o.integrator, "override the scene's integrator");
     cmd->add_option("--duration", o.duration, "override the scene's duration, s");
     cmd->add_option("--dt", o.dt, "override the scene's time step, s");
+    cmd->add_option("--threads", o.threads,
+                    "physics threads for contacts (default 1; the states are identical for any "
+                    "count)")
+        ->check(CLI::Range(1, 64));
     cmd->add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
 }
 

@@ -16,10 +16,14 @@ constexpr Preset kPresets[] = {{"plastic", {0.45f, 0.5f, 0.0f}},
                                {"rubber", {0.7f, 0.2f, 0.0f}},
                                {"metal", {0.2f, 1.0f, 1.0f}}};
 
-float unit_interval(JsonReader r, const char* what) {
+double unit_interval(const JsonReader& r, const char* what) {
     const double v = r.number(what);
     if (v < 0.0 || v > 1.0) r.fail(std::string("expected ") + what + ", got " + r.value().dump());
-    return static_cast<float>(v);
+    return v;
+}
+
+float unit_knob(const JsonReader& r, const char* what) {
+    return static_cast<float>(unit_interval(r, what));
 }
 
 } // namespace
@@ -30,19 +34,31 @@ std::string material_preset_names() {
     return out;
 }
 
-render::Material read_material(JsonReader r) {
-    if (r.value().is_string()) {
-        const std::string name = r.string();
-        for (const Preset& p : kPresets)
-            if (name == p.name) return p.material;
-        r.fail("unknown material \"" + name + "\"; presets: " + material_preset_names() +
-               ", or {\"roughness\": r, \"specular\": s, \"metallic\": m} with values in [0, 1]");
-    }
-    render::Material m = kPresets[0].material;
-    if (auto p = r.optional("preset")) m = read_material(*p);
-    if (auto v = r.optional("roughness")) m.roughness = unit_interval(*v, "a roughness in [0, 1]");
-    if (auto v = r.optional("specular")) m.specular = unit_interval(*v, "a specular in [0, 1]");
-    if (auto v = r.optional("metallic")) m.metallic = unit_interval(*v, "a metallic in [0, 1]");
+namespace {
+
+render::Material read_preset(const JsonReader& r) {
+    const std::string name = r.string();
+    for (const Preset& p : kPresets)
+        if (name == p.name) return p.material;
+    r.fail("unknown material \"" + name + "\"; presets: " + material_preset_names() +
+           ", or {\"roughness\": r, \"specular\": s, \"metallic\": m, \"friction\": mu, "
+           "\"restitution\": e}");
+}
+
+} // namespace
+
+render::Material read_material(JsonReader r, physics::ShapeKind kind, physics::Material& contact) {
+    if (r.value().is_string()) return read_preset(r);
+    render::Material m = default_material(kind);
+    if (auto p = r.optional("preset")) m = read_preset(*p);
+    if (auto v = r.optional("roughness")) m.roughness = unit_knob(*v, "a roughness in [0, 1]");
+    if (auto v = r.optional("specular")) m.specular = unit_knob(*v, "a specular in [0, 1]");
+    if (auto v = r.optional("metallic")) m.metallic = unit_knob(*v, "a metallic in [0, 1]");
+    if (auto v = r.optional("friction"))
+        contact.friction = v->non_negative("a friction coefficient >= 0");
+    if (auto v = r.optional("restitution"))
+        contact.restitution =
+            unit_interval(*v, "a restitution in [0, 1] (0: no bounce, 1: elastic)");
     r.finish();
     return m;
 }

@@ -56,7 +56,7 @@ int run_render(const RenderCommand& cmd) {
             throw SceneError("--frame", std::to_string(*cmd.frame),
                              "expected a frame index in [0, " + std::to_string(tl.frames - 1) +
                                  "]");
-        sim = make_simulation(scene, tl.h);
+        sim = make_simulation(scene, tl.h, cmd.common.threads);
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     }

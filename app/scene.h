@@ -5,6 +5,8 @@
 #include "physics/build.h"
 #include "render/scene_view.h"
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ struct BodyLook {
     std::string name;                         // from the scene, or "body <i>"
     glm::vec3 color{0.8f, 0.8f, 0.8f};        // sRGB
     float plane_extent = 20.0f;               // drawn side length of a plane, m
+    std::uint32_t mesh_id = 0;                // mesh bodies: index into Scene::meshes
     std::optional<render::Material> material; // the scene's; else app/materials.h's default
 };
 
@@ -38,6 +41,12 @@ struct Scene {
     double duration = 10.0; // s of simulated (and rendered) time
     std::vector<physics::BodyDef> bodies;
     std::vector<BodyLook> looks; // one per body
+    // The drawn triangles of the scene's mesh files, shared by every body using one (BodyLook::
+    // mesh_id) and by every frame's SceneView (render uploads each once).
+    std::vector<std::shared_ptr<const render::MeshData>> meshes;
+    // Things worth telling the user that do not stop the run (e.g. bodies starting deeply
+    // interpenetrated); commands print them to stderr as "tumble: warning: ...".
+    std::vector<std::string> warnings;
     RenderSettings render;
 };
 

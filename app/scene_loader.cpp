@@ -27,6 +27,12 @@ void read_world(JsonReader r, Scene& s) {
                     "\"; valid integrators: " + physics::integrator_names());
         s.world.integrator = *id;
     }
+    physics::ContactSettings& c = s.world.contact; // physics/contact_model.h
+    if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
+    if (auto v = r.optional("substeps"))
+        c.substeps = v->integer(0, 64, "contact substeps per step (0: automatic)");
+    if (auto v = r.optional("restitution_threshold"))
+        c.restitution_threshold = v->non_negative("an impact speed >= 0 in m/s");
     r.finish();
 }
 
@@ -76,13 +82,15 @@ Scene load_scene(const std::string& text, const std::string& source) {
     const std::size_t n = bodies.size();
     s.bodies.resize(n);
     s.looks.resize(n);
+    ShapeContext shapes{source, &s.meshes, {}};
     for (std::size_t i = 0; i < n; ++i)
-        read_body(bodies.at(i), static_cast<int>(i), s.bodies[i], s.looks[i]);
+        read_body(bodies.at(i), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
     r.finish();
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);
-    (void)make_simulation(s, s.world.dt); // physics validation, mapped to JSON paths
+    // Physics validation, mapped to JSON paths; then what is legal but probably unintended.
+    s.warnings = initial_state_warnings(s, make_simulation(s, s.world.dt));
     return s;
 }
 

@@ -8,6 +8,8 @@ namespace tumble::app {
 
 Scene load_for_command(const SceneOptions& opts) {
     Scene scene = load_scene_argument(opts.scene);
+    for (const std::string& w : scene.warnings)
+        std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
     if (opts.integrator) {
         const auto id = physics::integrator_from_name(*opts.integrator);
         if (!id)

@@ -22,7 +22,7 @@ int run_simulate(const SimulateCommand& cmd) {
     try {
         scene = load_for_command(cmd.common);
         tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
-        sim = make_simulation(scene, tl.h);
+        sim = make_simulation(scene, tl.h, cmd.common.threads);
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     }
@@ -38,7 +38,7 @@ int run_simulate(const SimulateCommand& cmd) {
                 interrupted = true;
                 break;
             }
-            physics::step(sim.model, sim.state);
+            sim.step();
             if (k % cmd.every == 0 || k == total) out.write(sim.model, sim.state);
             progress.update(k);
         }

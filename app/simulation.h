@@ -1,18 +1,33 @@
 #pragma once
-// A scene made ready to step: the physics model and its initial state.
+// A scene made ready to step: the physics model, its initial state and the step's workspace.
 #include "app/scene.h"
 #include "physics/model.h"
 #include "physics/state.h"
+#include "physics/step.h"
+
+#include <memory>
 
 namespace tumble::app {
 
 struct Simulation {
     physics::Model model;
     physics::State state;
+    // The contact stage's buffers and worker threads (physics/step.h). States do not depend on
+    // the thread count: the same scene gives the same bits with 1 or N threads.
+    std::unique_ptr<physics::StepWorkspace> workspace;
+
+    // One physics step. Throws physics::DivergenceError.
+    void step() { physics::step(model, state, *workspace); }
 };
 
-// Builds the model with time step `dt` (the scene's, or one adjusted to hit frame times).
-// Physics validation errors become SceneError at the JSON path of the offending field.
-Simulation make_simulation(const Scene& scene, double dt);
+// Builds the model with time step `dt` (the scene's, or one adjusted to hit frame times) and a
+// workspace of `threads` threads (only a scene with contacts uses more than one). Physics
+// validation errors become SceneError at the JSON path of the offending field, with the bodies
+// the message mentions named.
+Simulation make_simulation(const Scene& scene, double dt, int threads = 1);
+
+// Warnings about the initial state that do not stop the run: pairs of bodies starting deeply
+// interpenetrated (physics::deep_initial_overlaps), each naming both bodies.
+std::vector<std::string> initial_state_warnings(const Scene& scene, const Simulation& sim);
 
 } // namespace tumble::app

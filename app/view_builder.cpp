@@ -8,35 +8,57 @@
 namespace tumble::app {
 namespace {
 
-// Unit mesh -> body frame scale: unit sphere radius 1, unit box [-1, 1]^3, unit plane 2 x 2.
-glm::vec3 mesh_scale(const physics::Shape& s, const BodyLook& look) {
-    switch (s.kind) {
-    case physics::ShapeKind::Sphere:
-        return glm::vec3(static_cast<float>(s.radius));
-    case physics::ShapeKind::Box:
-        return glm::vec3(s.half_extents.x(), s.half_extents.y(), s.half_extents.z());
-    case physics::ShapeKind::Plane:
-        return glm::vec3(0.5f * look.plane_extent, 0.5f * look.plane_extent, 1.0f);
-    case physics::ShapeKind::Capsule: // physics has them; the scene loader does not make them yet
-    case physics::ShapeKind::Mesh:
-        break;
-    }
-    return glm::vec3(1.0f);
+glm::mat4 scaled(const glm::mat4& pose, glm::vec3 scale) {
+    return pose * glm::scale(glm::mat4(1.0f), scale);
 }
 
-render::MeshKind mesh_kind(physics::ShapeKind k) {
-    switch (k) {
+// The body's unit mesh (render/scene_view.h) scaled to its shape: sphere radius 1, box
+// [-1, 1]^3, plane 2 x 2, cylinder radius 1 and z in [-1, 1]; a mesh is drawn as given.
+render::Instance main_instance(const physics::Shape& s, const BodyLook& look,
+                               const glm::mat4& pose) {
+    const auto f = [](double x) { return static_cast<float>(x); };
+    render::Instance in;
+    in.transform = pose;
+    switch (s.kind) {
     case physics::ShapeKind::Sphere:
-        return render::MeshKind::Sphere;
+        in.mesh = render::MeshKind::Sphere;
+        in.transform = scaled(pose, glm::vec3(f(s.radius)));
+        break;
     case physics::ShapeKind::Box:
-        return render::MeshKind::Box;
+        in.mesh = render::MeshKind::Box;
+        in.transform = scaled(
+            pose, glm::vec3(f(s.half_extents.x()), f(s.half_extents.y()), f(s.half_extents.z())));
+        break;
     case physics::ShapeKind::Plane:
-        return render::MeshKind::Plane;
-    case physics::ShapeKind::Capsule: // as in mesh_scale()
+        in.mesh = render::MeshKind::Plane;
+        in.transform =
+            scaled(pose, glm::vec3(0.5f * look.plane_extent, 0.5f * look.plane_extent, 1.0f));
+        break;
+    case physics::ShapeKind::Capsule: // the straight part; capsule_caps() adds the ends
+        in.mesh = render::MeshKind::Cylinder;
+        in.transform = scaled(pose, glm::vec3(f(s.radius), f(s.radius), f(s.half_length)));
+        break;
     case physics::ShapeKind::Mesh:
+        in.mesh = render::MeshKind::Custom;
+        in.mesh_id = look.mesh_id;
         break;
     }
-    return render::MeshKind::Sphere;
+    return in;
+}
+
+// A capsule is drawn as the renderer's cylinder plus a sphere at each end (render/mesh.h): the
+// sphere's normals at its equator are the cylinder's, so the seams do not show, and both keep
+// their level of detail by size on screen. The caps draw no axes (the cylinder does).
+void add_capsule_caps(const physics::Shape& s, const glm::mat4& pose, render::Instance base,
+                      std::vector<render::Instance>& out) {
+    base.mesh = render::MeshKind::Sphere;
+    base.axes = false;
+    const float r = static_cast<float>(s.radius), hl = static_cast<float>(s.half_length);
+    for (float side : {-1.0f, 1.0f}) {
+        const glm::mat4 end = glm::translate(pose, glm::vec3(0.0f, 0.0f, side * hl));
+        base.transform = scaled(end, glm::vec3(r));
+        out.push_back(base);
+    }
 }
 
 } // namespace
@@ -52,6 +74,7 @@ void build_view(const Scene& scene, const physics::Model& model, const physics::
     view.camera = camera_at(rig, state.time(model), followed);
     view.light = scene.render.light;
     view.background = scene.render.background;
+    view.meshes = scene.meshes; // shared pointers: uploaded once by the renderer
     view.instances.clear();
     for (int i = 0; i < model.body_count(); ++i) {
         const physics::Pose pose = physics::body_pose(model, state, i);
@@ -59,12 +82,15 @@ void build_view(const Scene& scene, const physics::Model& model, const physics::
                            pose.orientation.z());
         glm::mat4 m = glm::mat4(glm::mat4_cast(q)); // rotation, computed in double then rounded
         m[3] = glm::vec4(pose.position.x(), pose.position.y(), pose.position.z(), 1.0);
-        m = m * glm::scale(glm::mat4(1.0f), mesh_scale(model.shape[i], scene.looks[i]));
-        const physics::ShapeKind kind = model.shape[i].kind;
-        render::Instance instance{mesh_kind(kind), m, scene.looks[i].color};
-        instance.material = scene.looks[i].material.value_or(default_material(kind));
-        instance.axes = scene.render.axes && kind != physics::ShapeKind::Plane;
+        const physics::Shape& shape = model.shape[i];
+        const BodyLook& look = scene.looks[i];
+        render::Instance instance = main_instance(shape, look, m);
+        instance.color = look.color;
+        instance.material = look.material.value_or(default_material(shape.kind));
+        instance.axes = scene.render.axes && shape.kind != physics::ShapeKind::Plane;
         view.instances.push_back(instance);
+        if (shape.kind == physics::ShapeKind::Capsule)
+            add_capsule_caps(shape, m, instance, view.instances);
     }
 }
 

@@ -1,0 +1,186 @@
+// Scene input of the contact pipeline through the real binary: every kind of bad contact input
+// exits 2 with a message naming the file, the JSON path and what was expected, leaving nothing
+// behind; bodies starting deeply interpenetrated get a warning naming the pair; and physics
+// threads change nothing in the output.
+#include "app/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+namespace tumble::test {
+namespace {
+
+// A valid contact scene; each case below breaks one thing in it.
+const char* kGood = R"({
+  "format_version": 1,
+  "world": {"duration": 0.1, "sleeping": true, "substeps": 0, "restitution_threshold": 0.5},
+  "render": {"width": 64, "height": 48, "fps": 10},
+  "bodies": [
+    {"name": "floor", "shape": {"type": "plane"}},
+    {"name": "pill", "shape": {"type": "capsule", "radius": 0.1, "length": 0.3},
+     "position": [0, 0, 0.5], "material": {"friction": 0.5, "restitution": 0.3}},
+    {"name": "left wall", "shape": {"type": "box", "size": [0.1, 2, 1]}, "static": true,
+     "position": [-1, 0, 0.5]},
+    {"name": "right wall", "shape": {"type": "box", "size": [0.1, 2, 1]}, "static": true,
+     "position": [1, 0, 0.5]},
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.1}, "position": [0.5, 0, 0.5]}
+  ]
+})";
+
+// Two faces of a tetrahedron are missing: not a closed surface.
+const char* kOpenObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+    const auto at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return s.replace(at, from.size(), to);
+}
+
+struct Case {
+    const char* name;
+    std::string scene;
+    std::vector<std::string> expected; // substrings of stderr, besides the file name
+};
+
+std::vector<Case> cases() {
+    const std::string pill = R"({"type": "capsule", "radius": 0.1, "length": 0.3})";
+    const std::string ball = R"({"type": "sphere", "radius": 0.1})";
+    return {
+        {"negative_friction",
+         replace(kGood, "\"friction\": 0.5", "\"friction\": -0.1"),
+         {"/bodies/1/material/friction", "friction coefficient >= 0"}},
+        {"restitution_above_one",
+         replace(kGood, "\"restitution\": 0.3", "\"restitution\": 1.5"),
+         {"/bodies/1/material/restitution", "restitution in [0, 1]"}},
+        {"zero_capsule_radius",
+         replace(kGood, pill, R"({"type": "capsule", "radius": 0, "length": 0.3})"),
+         {"/bodies/1/shape/radius", "positive capsule radius"}},
+        {"negative_capsule_length",
+         replace(kGood, pill, R"({"type": "capsule", "radius": 0.1, "length": -0.3})"),
+         {"/bodies/1/shape/length", "positive length"}},
+        {"capsule_half_length_is_not_a_field",
+         replace(kGood, pill, R"({"type": "capsule", "radius": 0.1, "half_length": 0.3})"),
+         {"/bodies/1/shape", "missing required field \"length\""}},
+        {"zero_sphere_radius",
+         replace(kGood, ball, R"({"type": "sphere", "radius": 0})"),
+         {"/bodies/4/shape/radius", "positive radius"}},
+        {"flat_box",
+         replace(kGood, "\"size\": [0.1, 2, 1]", "\"size\": [0.1, 0, 1]"),
+         {"/bodies/2/shape/size", "positive box edge lengths"}},
+        {"overlapping_static_boxes",
+         replace(kGood, "\"position\": [1, 0, 0.5]", "\"position\": [-0.95, 0, 0.5]"),
+         {"/bodies/3/position", "\"right wall\"", "\"left wall\"", "overlaps"}},
+        {"substeps_out_of_range",
+         replace(kGood, "\"substeps\": 0", "\"substeps\": 65"),
+         {"/world/substeps", "contact substeps per step"}},
+        {"negative_restitution_threshold",
+         replace(kGood, "\"restitution_threshold\": 0.5", "\"restitution_threshold\": -1"),
+         {"/world/restitution_threshold", "impact speed >= 0"}},
+        {"sleeping_not_a_switch",
+         replace(kGood, "\"sleeping\": true", "\"sleeping\": \"yes\""),
+         {"/world/sleeping", "true or false"}},
+        {"missing_mesh_file",
+         replace(kGood, ball, R"({"type": "mesh", "file": "nowhere.obj"})"),
+         {"/bodies/4/shape/file", "no mesh file \"nowhere.obj\""}},
+        {"open_mesh",
+         replace(kGood, ball, R"({"type": "mesh", "file": "open.obj"})"),
+         {"/bodies/4/shape/file", "open.obj", "closed"}},
+        {"zero_mesh_scale",
+         replace(kGood, ball, R"({"type": "mesh", "file": "top.obj", "scale": 0})"),
+         {"/bodies/4/shape/scale", "positive scale"}},
+    };
+}
+
+TEST(ContactInput, EveryKindOfBadContactInputExitsTwoWithItsPlaceAndNoOutput) {
+    for (const Case& c : cases()) {
+        SCOPED_TRACE(c.name);
+        const auto dir = scratch_dir() / c.name;
+        std::filesystem::create_directories(dir);
+        write_text(dir / "bad.json", c.scene);
+        write_text(dir / "open.obj", kOpenObj);
+        for (const char* cmd : {"render bad.json -o out.mp4", "simulate bad.json -o states.csv"}) {
+            SCOPED_TRACE(cmd);
+            const CliResult r = run_tumble(dir, cmd);
+            EXPECT_EQ(r.exit_code, 2) << r.err;
+            EXPECT_NE(r.err.find("bad.json: /"), std::string::npos) << r.err;
+            for (const std::string& s : c.expected)
+                EXPECT_NE(r.err.find(s), std::string::npos) << s << "\n" << r.err;
+            EXPECT_EQ(files_in(dir), (std::vector<std::string>{"bad.json", "open.obj"}));
+        }
+    }
+}
+
+TEST(ContactInput, TheValidSceneRunsWithoutWarnings) {
+    const auto dir = scratch_dir();
+    write_text(dir / "good.json", kGood);
+    const CliResult r = run_tumble(dir, "simulate good.json -o states.csv");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+TEST(ContactInput, DeeplyInterpenetratedBodiesGetAWarningNamingThePairAndTheRunGoesOn) {
+    const auto dir = scratch_dir();
+    // The ball's centre 0.25 m from the capsule's axis: 5 cm deep in it.
+    write_text(dir / "deep.json",
+               replace(kGood, "\"position\": [0.5, 0, 0.5]", "\"position\": [0.15, 0, 0.5]"));
+    const CliResult r = run_tumble(dir, "simulate deep.json -o states.csv");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: deep.json: /bodies/4/position"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("body 4 \"ball\" starts interpenetrating body 1 \"pill\" by 50.0 mm"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "states.csv"));
+}
+
+// A pile: 24 boxes and spheres dropped in a loose heap into a walled pen, so that the contact
+// stage has hundreds of contacts to split between threads.
+std::string pile_scene() {
+    std::string bodies = R"({"shape": {"type": "plane"}})";
+    for (int side : {-1, 1}) {
+        bodies += R"(, {"shape": {"type": "box", "size": [0.1, 1.2, 0.5]}, "static": true,)"
+                  R"( "position": [)" +
+                  std::to_string(side * 0.55) + ", 0, 0.25]}";
+    }
+    for (int i = 0; i < 24; ++i) {
+        const double x = 0.17 * (i % 4) - 0.25, y = 0.17 * ((i / 4) % 2) - 0.08;
+        const double z = 0.15 + 0.17 * (i / 8);
+        const std::string shape = i % 3 ? R"({"type": "box", "size": [0.12, 0.1, 0.08]})"
+                                        : R"({"type": "sphere", "radius": 0.06})";
+        bodies += R"(, {"shape": )" + shape + R"(, "position": [)" + std::to_string(x) + ", " +
+                  std::to_string(y) + ", " + std::to_string(z) + "], \"angular_velocity\": [" +
+                  std::to_string(0.3 * (i % 5)) + ", 1, 0]}";
+    }
+    return R"({"format_version": 1, "world": {"duration": 1.5, "sleeping": false},)"
+           R"( "bodies": [)" +
+           bodies + "]}";
+}
+
+// Threads split the contact stage's work into fixed ranges: the states must be the same bits.
+TEST(ContactInput, SimulateGivesIdenticalStatesWithOneAndTwoPhysicsThreads) {
+    const auto dir = scratch_dir();
+    write_text(dir / "pile.json", pile_scene());
+    const char* common = "simulate pile.json --every 12 -q";
+    ASSERT_EQ(run_tumble(dir, std::string(common) + " --threads 1 -o one.csv").exit_code, 0);
+    ASSERT_EQ(run_tumble(dir, std::string(common) + " --threads 2 -o two.csv").exit_code, 0);
+    const std::string one = read_text(dir / "one.csv");
+    EXPECT_GT(one.size(), 20000u);              // 27 bodies x 31 rows
+    EXPECT_EQ(one, read_text(dir / "two.csv")); // %.17g: equal text = equal bits
+    // The pile moved: the top body's state in the last row (body 26 at the last step) differs
+    // from its first row.
+    const std::string tag = "\"body 26\",";
+    const auto first = one.find(tag), last = one.rfind(tag);
+    ASSERT_NE(first, std::string::npos);
+    ASSERT_NE(first, last);
+    EXPECT_NE(one.substr(first, one.find('\n', first) - first),
+              one.substr(last, one.find('\n', last) - last));
+}
+
+TEST(ContactInput, ThreadCountOutsideItsRangeIsRefused) {
+    const auto dir = scratch_dir();
+    const CliResult r = run_tumble(dir, "simulate --threads 0 -o states.csv");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());
+}
+
+} // namespace
+} // namespace tumble::test
