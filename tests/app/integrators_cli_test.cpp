@@ -26,10 +26,10 @@ TEST(IntegratorsCli, ExplainSaysWhichStagesAreOnAndWhy) {
     const auto dir = scratch_dir();
     const CliResult r = run_tumble(dir, "explain default --integrator splitting");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    // The default scene: a floating book (gravity_scale 0) and a ball that falls.
-    EXPECT_NE(r.out.find("gravity        on: 1 of 2 dynamic bodies"), std::string::npos) << r.out;
+    // The default scene: a floating book (gravity_scale 0) and three balls that fall.
+    EXPECT_NE(r.out.find("gravity        on: 3 of 4 dynamic bodies"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("applied loads  off"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("gyroscopic     on: 1 of 2 dynamic bodies have unequal moments (the "
+    EXPECT_NE(r.out.find("gyroscopic     on: 1 of 4 dynamic bodies have unequal moments (the "
                          "isotropic skip it"),
               std::string::npos)
         << r.out;
