@@ -33,6 +33,8 @@ struct RenderCommand {
     bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
     std::optional<bool> shadows, antialiasing, overlay, axes;
     bool stats = false; // print each pipeline stage's rate
+    // Integrators drawn side by side, each stepping its own copy of the scene (compare_run.cpp).
+    std::vector<std::string> compare;
 };
 
 // `tumble bench-render`: frames per second per stage and end to end, medians of repeated runs,
@@ -75,6 +77,7 @@ struct StudyCommand {
 };
 
 int run_render(const RenderCommand& cmd);
+int run_compare(const RenderCommand& cmd); // run_render() with --compare
 int run_bench_render(const BenchRenderCommand& cmd);
 int run_goldens(const GoldensCommand& cmd);
 int run_diff(const DiffCommand& cmd);

@@ -56,6 +56,9 @@ int main(int argc, char** argv) {
            "time, step, integrator, energy and momentum in the top-left corner");
     on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
+    r->add_option("--compare", render.compare,
+                  "integrators to draw side by side, e.g. euler,symplectic_euler,rk4,splitting")
+        ->delimiter(',');
 
     BenchRenderCommand bench;
     CLI::App* b = app.add_subcommand(
