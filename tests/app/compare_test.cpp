@@ -64,6 +64,19 @@ TEST(Compare, WritesAVideoAndSummarisesEachMethod) {
         EXPECT_NE(r.err.find(name), std::string::npos) << name << " missing in: " << r.err;
 }
 
+TEST(Compare, ADivergingMethodFreezesWhileTheOthersGoOn) {
+    // h |w| = 0.2 s * 8 rad/s = 1.6: explicit Euler's energy grows each step until the angular
+    // velocity overflows (step 43 measured); RK4 runs to the end.
+    const auto dir = scratch_dir();
+    write_text(dir / "s.json", kScene);
+    const CliResult r = run_tumble(dir, "render s.json --compare euler,rk4 --fps 5 --dt 0.2 "
+                                        "--duration 10 --width 162 --height 48 -o d.mp4");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("euler diverged: body 0"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("rk4: energy"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("wrote d.mp4 (50 frames"), std::string::npos) << r.err;
+}
+
 TEST(Compare, BadListsAreRefusedWithoutOutput) {
     const auto dir = scratch_dir();
     write_text(dir / "s.json", kScene);
