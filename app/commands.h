@@ -31,7 +31,7 @@ struct RenderCommand {
     std::string preset = "veryfast";
     // Picture switches; unset ones keep the scene's render settings.
     bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
-    std::optional<bool> shadows, antialiasing, overlay, axes;
+    std::optional<bool> shadows, antialiasing, overlay, axes, vectors;
     bool stats = false; // print each pipeline stage's rate
     // Integrators drawn side by side, each stepping its own copy of the scene (compare_run.cpp).
     std::vector<std::string> compare;

@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
     on_off("overlay", render.overlay,
            "time, step, integrator, energy and momentum in the top-left corner");
     on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
+    on_off("vectors", render.vectors,
+           "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
     r->add_option("--compare", render.compare,
                   "integrators to draw side by side, e.g. euler,symplectic_euler,rk4,splitting")
