@@ -32,8 +32,10 @@ struct RenderCommand {
     std::string preset = "veryfast";
     // Picture switches; unset ones keep the scene's render settings.
     bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
-    std::optional<bool> shadows, antialiasing, overlay, axes;
+    std::optional<bool> shadows, antialiasing, overlay, axes, vectors;
     bool stats = false; // print each pipeline stage's rate
+    // Integrators drawn side by side, each stepping its own copy of the scene (compare_run.cpp).
+    std::vector<std::string> compare;
 };
 
 // `tumble bench-render`: frames per second per stage and end to end, medians of repeated runs,
@@ -76,6 +78,7 @@ struct StudyCommand {
 };
 
 int run_render(const RenderCommand& cmd);
+int run_compare(const RenderCommand& cmd); // run_render() with --compare
 int run_bench_render(const BenchRenderCommand& cmd);
 int run_goldens(const GoldensCommand& cmd);
 int run_diff(const DiffCommand& cmd);

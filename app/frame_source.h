@@ -6,6 +6,7 @@
 #include "app/scene.h"
 #include "app/simulation.h"
 #include "app/timeline.h"
+#include "app/vector_arrows.h"
 #include "physics/diagnostics.h"
 #include "render/scene_view.h"
 
@@ -35,6 +36,7 @@ class FrameSource {
     std::int64_t k_ = 0, first_, last_;
     bool done_ = false;
     physics::Diagnostics initial_;
+    VectorArrows arrows_; // drawn when scene.render.vectors
 };
 
 } // namespace tumble::app

@@ -41,8 +41,10 @@ int main(int argc, char** argv) {
     r->add_option("--height", render.height, "image height, pixels (even for MP4)");
     r->add_option("--fps", render.fps, "frames per second");
     r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
-    r->add_option("--crf", render.crf, "H.264 quality, 0 (lossless) .. 51 (worst)")
-        ->check(CLI::Range(0, 51));
+    r->add_option(
+         "--crf", render.crf,
+         "quality, lower is better: H.264 (.mp4) 0..51, VP9 (.webm) 0..63 (checked by the sink)")
+        ->check(CLI::Range(0, 63));
     r->add_option("--preset", render.preset, "libx264 preset (ultrafast .. veryslow)");
     r->add_flag("--preview", render.preview,
                 "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
@@ -59,7 +61,12 @@ int main(int argc, char** argv) {
     on_off("overlay", render.overlay,
            "time, step, integrator, energy and momentum in the top-left corner");
     on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
+    on_off("vectors", render.vectors,
+           "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
+    r->add_option("--compare", render.compare,
+                  "integrators to draw side by side, e.g. euler,symplectic_euler,rk4,splitting")
+        ->delimiter(',');
 
     BenchRenderCommand bench;
     CLI::App* b = app.add_subcommand(

@@ -44,6 +44,7 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
 } // namespace
 
 int run_render(const RenderCommand& cmd) {
+    if (!cmd.compare.empty()) return run_compare(cmd);
     Scene scene;
     Timeline tl;
     Simulation sim;

@@ -26,6 +26,7 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     if (cmd.antialiasing) rs.antialiasing = *cmd.antialiasing;
     if (cmd.overlay) rs.overlay = *cmd.overlay;
     if (cmd.axes) rs.axes = *cmd.axes;
+    if (cmd.vectors) rs.vectors = *cmd.vectors;
     if (rs.width < 16 || rs.height < 16)
         throw SceneError("--width/--height",
                          std::to_string(rs.width) + "x" + std::to_string(rs.height),

@@ -32,6 +32,7 @@ struct RenderSettings {
     bool antialiasing = true; // 4x multisampling
     bool overlay = false;     // time, step, integrator, energy, momentum in the top-left corner
     bool axes = false;        // every body's own x, y, z axes as red, green, blue rods
+    bool vectors = false;     // w and L arrows at each dynamic body (app/vector_arrows.h)
 };
 
 struct Scene {

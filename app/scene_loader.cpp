@@ -59,6 +59,7 @@ void read_render(JsonReader r, RenderSettings& rs) {
     if (auto v = r.optional("antialiasing")) rs.antialiasing = v->boolean();
     if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
     if (auto v = r.optional("axes")) rs.axes = v->boolean();
+    if (auto v = r.optional("vectors")) rs.vectors = v->boolean();
     r.finish();
 }
 
