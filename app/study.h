@@ -25,6 +25,7 @@ inline constexpr int kSamples = 50;
 enum class ReferenceKind {
     Exact,        // the oracles of physics/exact (ExactBodyMotion per dynamic body)
     ConvergedRun, // a run of the registry's highest-order integrator at a much smaller step
+    Analytic,     // Problem::analytic: a closed form of the whole scene (contacts: bounces, rest)
 };
 
 struct StepRange {
@@ -42,6 +43,14 @@ struct Problem {
     ReferenceKind reference = ReferenceKind::Exact;
     int reference_refine = 16; // ConvergedRun: reference step = finest grid step / this
     StepRange full, quick;
+    // ReferenceKind::Analytic: sets the dynamic bodies of `state` (the initial state on entry)
+    // to the exact motion at time t.
+    std::function<void(double t, const physics::Model& model, physics::State& state)> analytic = {};
+    // A contact problem: its error is dominated by the contact stage, which is first order
+    // whatever the integrator (impacts, and x += h v for bodies in contact: docs/contacts.md), and
+    // its bodies need not turn. Orders, plots and recommendations then judge the position error
+    // and expect order 1.
+    bool contacts = false;
 };
 
 // The reference problems, in report order; the first is the headline (intermediate-axis flip).
@@ -80,6 +89,13 @@ struct Row {
     double steps_per_second = 0.0; // whole-scene steps per second
     double cost_s = 0.0;           // time to simulate [0, T]: ns_per_body_step * bodies * steps
     int repetitions = 0;
+    bool contacts = false; // the problem's: headline_error() is the position error
 };
+
+// The error a row is judged by (order fits, plots, recommendations): the orientation error over
+// the run, or for a contact problem the position error.
+inline double headline_error(const Row& r) {
+    return r.contacts ? r.max.position : r.max.orientation;
+}
 
 } // namespace tumble::app::study

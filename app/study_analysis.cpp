@@ -13,10 +13,11 @@ std::vector<OrderFit> fit_orders(const std::vector<Row>& rows) {
         while (end < rows.size() && rows[end].problem == rows[i].problem &&
                rows[end].integrator == rows[i].integrator)
             ++end;
-        OrderFit f{rows[i].problem, rows[i].integrator, rows[i].order, 0.0, 0};
+        OrderFit f{rows[i].problem, rows[i].integrator, rows[i].contacts ? 1 : rows[i].order, 0.0,
+                   0};
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
         for (std::size_t k = i; k < end; ++k) {
-            const double e = rows[k].max.orientation;
+            const double e = headline_error(rows[k]);
             if (rows[k].diverged || !(e >= kFitMinError && e <= kFitMaxError)) continue;
             const double x = std::log(rows[k].dt), y = std::log(e);
             sx += x, sy += y, sxx += x * x, sxy += x * y, ++f.points;
@@ -33,7 +34,7 @@ std::vector<OrderFit> fit_orders(const std::vector<Row>& rows) {
 bool reaches(const std::vector<Row>& rows, const Row& r, double target) {
     for (const Row& o : rows)
         if (o.problem == r.problem && o.integrator == r.integrator && o.dt <= r.dt &&
-            (o.diverged || !(o.max.orientation <= target)))
+            (o.diverged || !(headline_error(o) <= target)))
             return false;
     return true;
 }

@@ -57,7 +57,7 @@ void print_summary(const Results& r, const std::string& dir) {
         }
         std::printf("  %-18s %s  %-16s h = %-9.3g error %s  cost %.3g ms\n", rec.problem.c_str(),
                     sci(rec.target, 0).c_str(), rec.row->integrator.c_str(), rec.row->dt,
-                    sci(rec.row->max.orientation).c_str(), 1e3 * rec.row->cost_s);
+                    sci(headline_error(*rec.row)).c_str(), 1e3 * rec.row->cost_s);
     }
     std::printf("wrote %s/report.md, study.csv, study.json and plots/ in %.1f s\n", dir.c_str(),
                 r.seconds_total);

@@ -46,6 +46,19 @@ Reference exact_reference(const Problem& p) {
     return ref;
 }
 
+Reference analytic_reference(const Problem& p) {
+    const Setup s = make_setup(p, physics::integrators().front().id, p.duration / kSamples);
+    Reference ref;
+    for (int j = 0; j <= kSamples; ++j) {
+        State st = s.state;
+        st.step = j;
+        p.analytic(p.duration * j / kSamples, s.model, st);
+        ref.diagnostics.push_back(physics::diagnose(s.model, st));
+        ref.states.push_back(std::move(st));
+    }
+    return ref;
+}
+
 // The first integrator of the registry with the highest theoretical order.
 physics::Integrator most_accurate() {
     const physics::IntegratorInfo* best = &physics::integrators().front();
@@ -79,7 +92,15 @@ double relative(const Vec3& a, const Vec3& ref) {
 } // namespace
 
 Reference make_reference(const Problem& p, bool quick) {
-    return p.reference == ReferenceKind::Exact ? exact_reference(p) : converged_reference(p, quick);
+    switch (p.reference) {
+    case ReferenceKind::Exact:
+        return exact_reference(p);
+    case ReferenceKind::Analytic:
+        return analytic_reference(p);
+    case ReferenceKind::ConvergedRun:
+        break;
+    }
+    return converged_reference(p, quick);
 }
 
 Errors measure(const Model& model, const State& run, const State& ref, const Diagnostics& ref_d) {

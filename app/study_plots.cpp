@@ -101,23 +101,27 @@ std::vector<std::string> integrator_names() {
     return names;
 }
 
-// (x, orientation error) of one (problem, integrator), diverged rows left out.
+// (x, headline error) of one (problem, integrator), diverged rows left out.
 std::vector<std::pair<double, double>> rows_xy(const Results& r, const std::string& problem,
                                                const std::string& integrator, bool cost) {
     std::vector<std::pair<double, double>> xy;
     for (const Row& row : r.rows)
         if (row.problem == problem && row.integrator == integrator && !row.diverged)
-            xy.emplace_back(cost ? row.cost_s : row.dt, row.max.orientation);
+            xy.emplace_back(cost ? row.cost_s : row.dt, headline_error(row));
     std::sort(xy.begin(), xy.end());
     return xy;
 }
 
 void problem_plots(const fs::path& dir, const Results& r, const std::string& problem) {
     const std::vector<std::string> names = integrator_names();
+    bool contacts = false;
+    for (const Row& row : r.rows) contacts |= row.problem == problem && row.contacts;
+    const char* ylabel = contacts ? "set ylabel \"position error, max over [0, T], m\"\n"
+                                  : "set ylabel \"orientation error, max over [0, T], rad\"\n";
     std::ostringstream wp;
     wp << kLogAxes << "set title \"" << problem
        << ": work against precision\"\nset xlabel \"cost: measured time to simulate [0, T], s\"\n"
-          "set ylabel \"orientation error, max over [0, T], rad\"\n";
+       << ylabel;
     wp << series(wp, names, [&](std::size_t i) { return rows_xy(r, problem, names[i], true); });
     draw(dir, fs::path(work_precision_plot(problem)).stem().string(), wp.str());
 
@@ -131,7 +135,7 @@ void problem_plots(const fs::path& dir, const Results& r, const std::string& pro
     std::ostringstream dt;
     dt << kLogAxes << "set title \"" << problem
        << ": error against step (p: fitted order)\"\nset xlabel \"time step h, s\"\n"
-          "set ylabel \"orientation error, max over [0, T], rad\"\n";
+       << ylabel;
     dt << series(dt, titles, [&](std::size_t i) { return rows_xy(r, problem, names[i], false); });
     draw(dir, fs::path(error_vs_dt_plot(problem)).stem().string(), dt.str());
 }

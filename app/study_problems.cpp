@@ -1,7 +1,8 @@
 // The reference problems of `tumble study`, one table entry each. A problem is a world, its bodies,
 // a horizon T, where its reference motion comes from and the step grids of the full and the quick
-// study. Bodies with no closed-form motion (contacts, torques on a tumbling body) use a converged
-// run of the registry's highest-order integrator at a much smaller step as their reference.
+// study. Bodies with no closed-form motion (torques on a tumbling body) use a converged run of the
+// registry's highest-order integrator at a much smaller step as their reference; the contact
+// problems (a bouncing ball, a resting stack) have closed forms of their own.
 #include "app/study.h"
 #include "physics/exact/reference_scenes.h"
 
@@ -48,6 +49,65 @@ BodyDef with_moments(const Vec3& moments, const Quat& orientation, const Vec3& w
 
 Quat tilted(double angle, const Vec3& axis) {
     return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
+}
+
+// Contact problems. A ball (r = 0.1 m, 1 kg) dropped from rest with its bottom h0 = 1 m above a
+// plane, restitution e = 0.8. Exact motion: free fall between bounces, and at an impact with speed
+// V the ball leaves at e V (Newton), so the apexes are e^(2k) h0. In T = 2 s it lands at 0.452,
+// 1.174 and 1.752 s, at 4.43, 3.54 and 2.83 m/s, far above the 0.5 m/s restitution threshold;
+// no spin, no sliding (a vertical impact has no tangential velocity).
+constexpr double kBallRadius = 0.1, kDrop = 1.0, kBounce = 0.8, kG = 9.81;
+
+BodyDef ground() {
+    BodyDef g;
+    g.shape = Shape::plane();
+    g.motion = physics::Motion::Static;
+    return g;
+}
+
+std::vector<BodyDef> bouncing_ball() {
+    BodyDef ball;
+    ball.shape = Shape::sphere(kBallRadius);
+    ball.mass = 1.0;
+    ball.position = Vec3(0.0, 0.0, kBallRadius + kDrop);
+    ball.material.restitution = kBounce;
+    return {ground(), ball};
+}
+
+// Walks the flights: from height z0 with upward speed u the ball lands after
+// tau = (u + V) / g with V = sqrt(u^2 + 2 g (z0 - r)), and leaves again at e V.
+void bouncing_ball_motion(double t, const physics::Model& m, physics::State& s) {
+    double t0 = 0.0, z0 = kBallRadius + kDrop, u = 0.0;
+    for (;;) {
+        const double impact_speed = std::sqrt(u * u + 2.0 * kG * (z0 - kBallRadius));
+        const double tau = (u + impact_speed) / kG;
+        if (t0 + tau > t) break;
+        t0 += tau, z0 = kBallRadius, u = kBounce * impact_speed;
+    }
+    const double dt = t - t0;
+    const int ball = m.dynamic_bodies.front();
+    s.x[ball] = Vec3(0.0, 0.0, z0 + u * dt - 0.5 * kG * dt * dt);
+    s.v[ball] = Vec3(0.0, 0.0, u - kG * dt);
+}
+
+// Three 0.4 m cubes of 1 kg stacked on a plane, exactly touching, sleeping off: the exact motion
+// is none, so every error is drift (the soft contacts' sag, creep, jitter).
+physics::WorldDef stack_world() {
+    WorldDef w;
+    w.contact.sleeping = false;
+    return w;
+}
+
+std::vector<BodyDef> box_stack() {
+    std::vector<BodyDef> bodies{ground()};
+    for (int i = 0; i < 3; ++i) {
+        BodyDef b;
+        b.shape = Shape::box(Vec3(0.2, 0.2, 0.2));
+        b.mass = 1.0;
+        b.position = Vec3(0.0, 0.0, 0.2 + 0.4 * i);
+        bodies.push_back(b);
+    }
+    return bodies;
 }
 
 std::vector<Problem> make_problems() {
@@ -107,6 +167,32 @@ std::vector<Problem> make_problems() {
                  },
                  1.5, ReferenceKind::ConvergedRun, 16, StepRange{0.03, 1e-5, 5},
                  StepRange{0.03, 3e-4, 2}});
+    Problem ball{"bouncing-ball",
+                 "contacts: a ball dropped 1 m on a plane with restitution 0.8, three bounces "
+                 "(closed form: free fall, impacts leaving at e V)",
+                 [] { return WorldDef{}; },
+                 bouncing_ball,
+                 2.0,
+                 ReferenceKind::Analytic,
+                 16,
+                 StepRange{0.02, 2e-5, 5},
+                 StepRange{0.02, 2e-4, 2}};
+    ball.analytic = bouncing_ball_motion;
+    ball.contacts = true;
+    p.push_back(ball);
+    Problem stack{"box-stack",
+                  "contacts: three 0.4 m cubes resting in a stack on a plane, sleeping off "
+                  "(exact motion: none; the error is drift)",
+                  stack_world,
+                  box_stack,
+                  2.0,
+                  ReferenceKind::Analytic,
+                  16,
+                  StepRange{0.02, 1e-4, 4},
+                  StepRange{0.02, 1e-3, 2}};
+    stack.analytic = [](double, const physics::Model&, physics::State&) {};
+    stack.contacts = true;
+    p.push_back(stack);
     return p;
 }
 

@@ -135,6 +135,7 @@ void write_json(const std::filesystem::path& file, const Results& r) {
                       {"dt", rec.row->dt},
                       {"steps", rec.row->steps},
                       {"orientation_error", rec.row->max.orientation},
+                      {"error", headline_error(*rec.row)},
                       {"cost_s", rec.row->cost_s},
                       {"ns_per_body_step", rec.row->ns_per_body_step}});
         else

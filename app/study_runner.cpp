@@ -141,6 +141,7 @@ std::vector<Row> run_grid(const std::vector<Problem>& problems, bool quick, int 
         row.problem = p.name;
         row.integrator = std::string(job.info->name);
         row.order = job.info->order;
+        row.contacts = p.contacts;
         row.steps = job.steps;
         row.dt = p.duration / static_cast<double>(job.steps);
         row.h_w = row.dt * largest_spin(p);

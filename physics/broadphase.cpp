@@ -24,6 +24,12 @@ constexpr int kForward[13][3] = {{1, -1, -1}, {1, -1, 0}, {1, -1, 1}, {1, 0, -1}
 } // namespace
 
 std::uint32_t BroadPhase::Grid::bucket(const Cell& c) const {
+    if (dense) {
+        const std::int64_t x = std::int64_t{c.x} - lo.x, y = std::int64_t{c.y} - lo.y,
+                           z = std::int64_t{c.z} - lo.z;
+        if (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz) return outside;
+        return static_cast<std::uint32_t>((z * ny + y) * nx + x);
+    }
     // Large odd multipliers spread neighbouring cells over the table (Teschner et al. 2003).
     const std::uint32_t h = static_cast<std::uint32_t>(c.x) * 73856093u ^
                             static_cast<std::uint32_t>(c.y) * 19349663u ^
@@ -33,9 +39,29 @@ std::uint32_t BroadPhase::Grid::bucket(const Cell& c) const {
 
 void BroadPhase::Grid::build(const std::vector<int>& members, const std::vector<Cell>& cell_of,
                              const std::vector<Aabb>& boxes, std::vector<int>& cursor) {
+    // Dense when the occupied cells' bounding block has at most 8 cells per member (a pile, a
+    // rain): bucket = cell, no hashing and no other cell's entries to skip. Else a hash table.
+    Cell hi{};
+    lo = hi;
+    if (!members.empty()) lo = hi = cell_of[members.front()];
+    for (int i : members) {
+        const Cell& c = cell_of[i];
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+    }
+    nx = std::int64_t{hi.x} - lo.x + 1, ny = std::int64_t{hi.y} - lo.y + 1;
+    nz = std::int64_t{hi.z} - lo.z + 1;
+    const double cells =
+        static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz);
+    dense = !members.empty() && cells <= 8.0 * static_cast<double>(members.size()) + 64.0;
     std::uint32_t size = 16;
-    while (size < 2 * members.size()) size <<= 1;
-    mask = size - 1;
+    if (dense) {
+        outside = static_cast<std::uint32_t>(nx * ny * nz); // an extra bucket, always empty
+        size = outside + 1;
+    } else {
+        while (size < 2 * members.size()) size <<= 1;
+        mask = size - 1;
+    }
     start.assign(size + 1, 0);
     for (int i : members) ++start[bucket(cell_of[i]) + 1];
     for (std::uint32_t b = 0; b < size; ++b) start[b + 1] += start[b];

@@ -7,7 +7,8 @@
 // Every bounded body sits in the cell of its box centre, with the cell edge c at least the largest
 // box extent among "small" bodies; two boxes that overlap then have centres less than c apart on
 // every axis, so a body finds all its partners in the 3 x 3 x 3 cells around its own. Cells live
-// in a hash table (a counting sort by hash into flat arrays: no per-cell allocation), with each
+// in a dense block when the occupied cells are compact (at most 8 cells per body), else a hash
+// table (either way a counting sort into flat arrays: no per-cell allocation), with each
 // body's cell and box copied next to it in sorted order so that a scan reads memory in sequence.
 // Awake dynamic bodies (the ones that look for partners) and the others (static, asleep) are in
 // two grids: two awake bodies meet through the forward half of the neighbourhood (13 cells and
@@ -47,11 +48,15 @@ class BroadPhase {
 
   private:
     struct Grid {
-        std::uint32_t mask = 0;
-        std::vector<int> start; // bucket b holds entries [start[b], start[b + 1])
-        std::vector<int> body;  // entries sorted by bucket, body order within a bucket
-        std::vector<Cell> cell; // per entry
-        std::vector<Aabb> box;  // per entry
+        bool dense = false; // buckets are the cells of the block lo + [0, n)
+        Cell lo{};          // dense: the block's first cell
+        std::int64_t nx = 0, ny = 0, nz = 0;
+        std::uint32_t outside = 0; // dense: the empty bucket of cells outside the block
+        std::uint32_t mask = 0;    // hashed: bucket = hash & mask
+        std::vector<int> start;    // bucket b holds entries [start[b], start[b + 1])
+        std::vector<int> body;     // entries sorted by bucket, body order within a bucket
+        std::vector<Cell> cell;    // per entry
+        std::vector<Aabb> box;     // per entry
         void build(const std::vector<int>& members, const std::vector<Cell>& cell_of,
                    const std::vector<Aabb>& boxes, std::vector<int>& cursor);
         std::uint32_t bucket(const Cell& c) const;

@@ -34,6 +34,13 @@ TEST(IntegratorsCli, ExplainSaysWhichStagesAreOnAndWhy) {
               std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("integrate      splitting (order 2)"), std::string::npos) << r.out;
+    // The ground and a falling ball can touch: the reason, the substeps and sleeping, in numbers.
+    EXPECT_NE(r.out.find("contacts       on: bodies 0 and 2 accelerate relative to each other "
+                         "(9.81 m/s^2)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("2 substeps of 2.08 ms per step; sleeping on"), std::string::npos)
+        << r.out;
 }
 
 } // namespace
