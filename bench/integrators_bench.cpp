@@ -9,8 +9,12 @@
 //                                 (max |E/E0 - 1|), momentum_err (max |L - L0| / |L0|),
 //                                 orientation_err (rad, at 10 s).
 //   spheres/<integrator>/assembled  1000 torque-free spheres without gravity: the step as the scene
-//   spheres/<integrator>/full       needs it (no gravity, no loads, no gyroscopic work) and with
-//                                 force_all_passes() (every pass, no isotropic shortcut).
+//   spheres/<integrator>/full       needs it (no gravity, no loads, no gyroscopic work, no contact
+//                                 stage: they fly apart and cannot touch) and with
+//                                 force_all_passes() (every pass, no isotropic shortcut, and since
+//                                 the contacts commit the contact stage too, which finds nothing:
+//                                 same results, plus its cost; results/vm/ before 2026-11-22
+//                                 predate this).
 //
 // Each iteration restores a saved state and takes 100 steps (MuJoCo's step benchmark habit), so
 // every repetition times the same motion. After the runs a summary table gives the medians with
