@@ -1,7 +1,7 @@
 // One step of the simulation, assembled from what the scene contains (Model::passes).
 //
-// A scene whose shapes can never touch (one body, or none dynamic) runs only the named integrator
-// over the step h, then the finite check. Nothing else is built or run: no broad phase, no
+// A scene whose shapes can never touch (can_touch.h: one body, none dynamic, or bodies whose free
+// flight keeps them apart) runs only the named integrator over the step h, then the finite check. Nothing else is built or run: no broad phase, no
 // buffers, no threads ("model only what a scene requires"; `tumble explain` says which).
 //
 // A scene with contacts runs the contact stage (contact_stage.h), which wraps the integrator in
@@ -20,7 +20,7 @@
 //   4. impacts  restitution: approaching points that close within the step get pairwise
 //               Newton collisions, swept until no impact is left, energy-consistent with the bounce
 //               happening inside the step (contact_impacts.cpp).
-//   5. substeps n = ceil(h / (1/240 s)) times, with h' = h / n:
+//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n:
 //        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact
 //        b. solve      warm start, then one Gauss-Seidel sweep: soft non-penetration (pushes
 //                      overlap out as a stiff damped spring), Coulomb friction with two
