@@ -93,7 +93,10 @@ void ContactStage::solve_and_integrate(const Model& m, State& s, IntegrateFn int
     const int nc = static_cast<int>(constrained_.size());
     solved_v_.resize(nc);
     before_x_.resize(nc);
-    // Motion of each constrained body since the start of the step.
+    // Motion of each constrained body since the start of the step, and its world inverse inertia
+    // I_w^-1 = R I_body^-1 R^T at the current orientation. A top spinning at 75 rad/s turns 0.3 rad
+    // in a step; impulses applied through the inertia of the step's start changed w by the wrong
+    // amount, and a spinning top on a plane gained energy (+0.5% in 2 s with 8 substeps).
     auto track = [&] {
         pool.for_ranges(nc, 512, [&](int begin, int end, int) {
             for (int k = begin; k < end; ++k) {
@@ -101,6 +104,10 @@ void ContactStage::solve_and_integrate(const Model& m, State& s, IntegrateFn int
                 bodies_.delta[i] = s.x[i] - bodies_.x0[i];
                 if (bodies_.rotates[i])
                     bodies_.turn[i] = (s.q[i] * bodies_.q0[i].conjugate()).toRotationMatrix();
+                if (!bodies_.isotropic[i]) {
+                    const Mat3 r = s.q[i].toRotationMatrix();
+                    bodies_.inv_inertia[i] = r * m.inv_inertia[i].asDiagonal() * r.transpose();
+                }
             }
         });
     };
