@@ -1,6 +1,6 @@
 #pragma once
-// Scenes from assets/scenes and meshes from assets/meshes, embedded in the binary at build time (cmake/TumbleEmbed.cmake), so
-// `tumble render` works with no scene file anywhere.
+// Scenes from assets/scenes and meshes from assets/meshes, embedded in the binary at build time
+// (cmake/TumbleEmbed.cmake), so `tumble render` works with no scene file anywhere.
 #include <string_view>
 #include <vector>
 

@@ -104,7 +104,8 @@ inline RainEnd judge_rain(const RainScene& scene, const physics::State& s) {
         e.outside += std::abs(x.x()) > wall || std::abs(x.y()) > wall || x.z() < 0.0;
         e.max_penetration = std::max({e.max_penetration, r - x.z(), x.x() + r - wall,
                                       -wall - (x.x() - r), x.y() + r - wall, -wall - (x.y() - r)});
-        e.kinetic_energy += 0.5 * m * s.v[i].squaredNorm() + 0.5 * 0.4 * m * r * r * s.w[i].squaredNorm();
+        e.kinetic_energy +=
+            0.5 * m * s.v[i].squaredNorm() + 0.5 * 0.4 * m * r * r * s.w[i].squaredNorm();
         grid[key(cell_of(x.x()), cell_of(x.y()), cell_of(x.z()))].push_back(i);
     }
     for (int i = first; i < n; ++i) {

@@ -1,8 +1,9 @@
 // One step of the simulation, assembled from what the scene contains (Model::passes).
 //
 // A scene whose shapes can never touch (can_touch.h: one body, none dynamic, or bodies whose free
-// flight keeps them apart) runs only the named integrator over the step h, then the finite check. Nothing else is built or run: no broad phase, no
-// buffers, no threads ("model only what a scene requires"; `tumble explain` says which).
+// flight keeps them apart) runs only the named integrator over the step h, then the finite check.
+// Nothing else is built or run: no broad phase, no buffers, no threads ("model only what a scene
+// requires"; `tumble explain` says which).
 //
 // A scene with contacts runs the contact stage (contact_stage.h), which wraps the integrator in
 // the soft step of Box2D v3 (Catto, "Solver2D", 2024):

@@ -8,7 +8,7 @@
 
 #define TUMBLE_MEASURED(value, bound)                                                              \
     do {                                                                                           \
-        std::printf("[measured] %s = %.6g (bound %.6g)\n", #value, static_cast<double>(value),    \
+        std::printf("[measured] %s = %.6g (bound %.6g)\n", #value, static_cast<double>(value),     \
                     static_cast<double>(bound));                                                   \
         ::testing::Test::RecordProperty(#value, std::to_string(static_cast<double>(value)));       \
     } while (0)
