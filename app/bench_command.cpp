@@ -92,6 +92,7 @@ PipelineStats run_once(const BenchCase& c, int frames, const std::string& output
     so.width = scene.render.width;
     so.height = scene.render.height;
     so.fps = scene.render.fps;
+    so.preset = video_preset(cmd); // as `tumble render` would encode it
     auto sink = render::open_sink(output, so);
     const RunResult r = render_frames(scene, tl, sim, *sink, 0, tl.frames - 1, true);
     sink->finish();

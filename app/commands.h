@@ -29,7 +29,8 @@ struct RenderCommand {
     std::optional<int> width, height, fps;
     std::optional<std::int64_t> frame; // render only this frame (to a still .png)
     int crf = 18;
-    std::string preset = "veryfast";
+    // Encoder preset; unset: "veryfast", or "ultrafast" with --preview (video_preset()).
+    std::optional<std::string> preset;
     // Picture switches; unset ones keep the scene's render settings.
     bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
     std::optional<bool> shadows, antialiasing, overlay, axes, vectors;

@@ -142,7 +142,7 @@ int run_compare(const RenderCommand& cmd) {
         so.height = base.render.height;
         so.fps = base.render.fps;
         so.crf = cmd.crf;
-        so.preset = cmd.preset;
+        so.preset = video_preset(cmd);
         sink = render::open_sink(output, so);
         RenderSettings tile_settings = base.render;
         tile_settings.width = tile_w;

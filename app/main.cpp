@@ -45,7 +45,9 @@ int main(int argc, char** argv) {
          "--crf", render.crf,
          "quality, lower is better: H.264 (.mp4) 0..51, VP9 (.webm) 0..63 (checked by the sink)")
         ->check(CLI::Range(0, 63));
-    r->add_option("--preset", render.preset, "libx264 preset (ultrafast .. veryslow)");
+    r->add_option(
+        "--preset", render.preset,
+        "encoder preset, ultrafast .. veryslow (default veryfast; ultrafast with --preview)");
     r->add_flag("--preview", render.preview,
                 "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
     // On/off pairs that override the scene's render settings only when given.

@@ -74,7 +74,7 @@ int run_render(const RenderCommand& cmd) {
         sink_options.height = scene.render.height;
         sink_options.fps = scene.render.fps;
         sink_options.crf = cmd.crf;
-        sink_options.preset = cmd.preset;
+        sink_options.preset = video_preset(cmd);
         sink = render::open_sink(output, sink_options);
         InterruptGuard guard;
         const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);

@@ -34,6 +34,11 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
 }
 
+std::string video_preset(const RenderCommand& cmd) {
+    if (cmd.preset) return *cmd.preset;
+    return cmd.preview ? "ultrafast" : "veryfast";
+}
+
 render::RenderOptions render_options(const RenderSettings& rs) {
     render::RenderOptions o;
     o.width = rs.width;

@@ -89,5 +89,20 @@ TEST(Video, InterruptFinishesAPlayableVideoAndSaysSo) {
     EXPECT_NEAR(std::stod(kv["duration"]), frames / 60.0, 1e-3); // format duration is in ms
 }
 
+// libx264 writes its settings into the stream (an SEI message: "... subme=0 ... me=dia ..." for
+// ultrafast, "subme=2 ... me=hex" for veryfast), so the preset a run used can be read back.
+TEST(Video, PreviewEncodesUltrafastUnlessAPresetIsGiven) {
+    const auto dir = scratch_dir();
+    CliResult r = run_tumble(dir, "render --preview --duration 0.1 -o p.mp4 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_tumble(dir, "render --preview --preset veryfast --duration 0.1 -o v.mp4 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string p = read_text(dir / "p.mp4"), v = read_text(dir / "v.mp4");
+    EXPECT_NE(p.find("subme=0"), std::string::npos);
+    EXPECT_NE(p.find("me=dia"), std::string::npos);
+    EXPECT_NE(v.find("subme=2"), std::string::npos);
+    EXPECT_NE(v.find("me=hex"), std::string::npos);
+}
+
 } // namespace
 } // namespace tumble::test
