@@ -1,5 +1,6 @@
 // Bad input gets one clear message naming the file, the place and what was expected, a non-zero
 // exit, and leaves no output file behind.
+#include "app/bad_input_case.h"
 #include "app/cli_runner.h"
 
 #include <gtest/gtest.h>
@@ -16,18 +17,6 @@ const char* kGood = R"({
     {"shape": {"type": "box", "size": [0.2, 0.1, 0.3]}, "mass": 1.0, "angular_velocity": [0, 3, 0.1]}
   ]
 })";
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-    const auto at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return s.replace(at, from.size(), to);
-}
-
-struct Case {
-    const char* name;
-    std::string scene;
-    std::vector<std::string> expected; // substrings of stderr, besides the file name
-};
 
 std::vector<Case> cases() {
     return {

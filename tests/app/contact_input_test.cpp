@@ -2,6 +2,7 @@
 // exits 2 with a message naming the file, the JSON path and what was expected, leaving nothing
 // behind; bodies starting deeply interpenetrated get a warning naming the pair; and physics
 // threads change nothing in the output.
+#include "app/bad_input_case.h"
 #include "app/cli_runner.h"
 
 #include <gtest/gtest.h>
@@ -28,18 +29,6 @@ const char* kGood = R"({
 
 // Two faces of a tetrahedron are missing: not a closed surface.
 const char* kOpenObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n";
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-    const auto at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return s.replace(at, from.size(), to);
-}
-
-struct Case {
-    const char* name;
-    std::string scene;
-    std::vector<std::string> expected; // substrings of stderr, besides the file name
-};
 
 std::vector<Case> cases() {
     const std::string pill = R"({"type": "capsule", "radius": 0.1, "length": 0.3})";
