@@ -21,6 +21,7 @@
 // two ratios measured in the same run: each integrator's cost over symplectic_euler's (the
 // cheapest method that rotates exactly), and the full pipeline's cost over the assembled step's.
 // `--summary=FILE` also writes that table as CSV.
+#include "bench/median_reporter.h"
 #include "physics/build.h"
 #include "physics/diagnostics.h"
 #include "physics/exact/body_motion.h"
@@ -129,21 +130,9 @@ void bench_spheres(benchmark::State& bench, Integrator integrator, bool full) {
 }
 
 // Keeps the medians (or the single runs, without repetitions) and prints the summary at the end.
-class SummaryReporter : public benchmark::ConsoleReporter {
+class SummaryReporter : public bench::MedianReporter {
   public:
-    explicit SummaryReporter(std::string path) : path_(std::move(path)) {}
-
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& r : runs) {
-            const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
-            if (!median && r.run_type != Run::RT_Iteration) continue;
-            Row& row = rows_[r.run_name.function_name];
-            if (row.median && !median) continue;
-            row.median = median;
-            for (const auto& [name, counter] : r.counters) row.values[name] = counter.value;
-        }
-    }
+    using MedianReporter::MedianReporter;
 
     void Finalize() override {
         ConsoleReporter::Finalize();
@@ -169,26 +158,6 @@ class SummaryReporter : public benchmark::ConsoleReporter {
     }
 
   private:
-    struct Row {
-        bool median = false;
-        std::map<std::string, double> values;
-    };
-
-    double value(const std::string& run, const std::string& counter) const {
-        const auto r = rows_.find(run);
-        if (r == rows_.end()) return NAN;
-        const auto c = r->second.values.find(counter);
-        return c == r->second.values.end() ? NAN : c->second;
-    }
-
-    bool any_median() const {
-        for (const auto& [name, row] : rows_)
-            if (row.median) return true;
-        return false;
-    }
-
-    std::string path_;
-    std::map<std::string, Row> rows_;
 };
 
 } // namespace

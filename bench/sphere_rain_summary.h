@@ -2,7 +2,7 @@
 // The summary of bench/sphere_rain_bench.cpp: medians of every case in one table (also written
 // as CSV with --summary=FILE), the two-core speed-up, and issue 4's targets, each judged on
 // numbers measured in this run.
-#include <benchmark/benchmark.h>
+#include "bench/median_reporter.h"
 
 #include <cmath>
 #include <cstdio>
@@ -12,22 +12,9 @@
 
 namespace tumble::bench {
 
-class RainSummary : public benchmark::ConsoleReporter {
+class RainSummary : public MedianReporter {
   public:
-    explicit RainSummary(std::string path) : path_(std::move(path)) {}
-
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& r : runs) {
-            const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
-            if (!median && r.run_type != Run::RT_Iteration) continue;
-            Row& row = rows_[r.run_name.function_name];
-            if (row.median && !median) continue;
-            row.median = median;
-            for (const auto& [name, counter] : r.counters) row.values[name] = counter.value;
-            row.values["wall_ms"] = r.GetAdjustedRealTime(); // the benchmarks' unit: ms
-        }
-    }
+    using MedianReporter::MedianReporter;
 
     void Finalize() override {
         ConsoleReporter::Finalize();
@@ -41,7 +28,7 @@ class RainSummary : public benchmark::ConsoleReporter {
             for (const char* c :
                  {"/shifted/threads:1", "/shifted/threads:2", "/columns/threads:1"}) {
                 const std::string name = base + c;
-                if (!rows_.count(name)) continue;
+                if (!has(name)) continue;
                 const bool two = std::string(c) == "/shifted/threads:2";
                 char line[512];
                 std::snprintf(
@@ -67,11 +54,6 @@ class RainSummary : public benchmark::ConsoleReporter {
     }
 
   private:
-    struct Row {
-        bool median = false;
-        std::map<std::string, double> values;
-    };
-
     static std::string fmt(double v) {
         char text[32];
         std::snprintf(text, sizeof text, "%.2f", v);
@@ -100,22 +82,6 @@ class RainSummary : public benchmark::ConsoleReporter {
         std::printf("  spheres outside the box or below the floor: %.0f (target 0): %s\n", out,
                     verdict(out == 0));
     }
-
-    double value(const std::string& run, const std::string& counter) const {
-        const auto r = rows_.find(run);
-        if (r == rows_.end()) return NAN;
-        const auto c = r->second.values.find(counter);
-        return c == r->second.values.end() ? NAN : c->second;
-    }
-
-    bool any_median() const {
-        for (const auto& [name, row] : rows_)
-            if (row.median) return true;
-        return false;
-    }
-
-    std::string path_;
-    std::map<std::string, Row> rows_;
 };
 
 } // namespace tumble::bench
