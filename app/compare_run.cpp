@@ -86,11 +86,6 @@ std::vector<physics::Integrator> parse_methods(const std::vector<std::string>& n
     return out;
 }
 
-std::string default_output(const Scene& scene) {
-    std::string stem = std::filesystem::path(scene.source).stem().string();
-    return (stem.empty() ? "tumble" : stem) + "-compare.mp4";
-}
-
 } // namespace
 
 int run_compare(const RenderCommand& cmd) {
@@ -108,10 +103,7 @@ int run_compare(const RenderCommand& cmd) {
         const auto methods = parse_methods(cmd.compare);
         grid = grid_for(int(methods.size()));
         tl = make_timeline(base.world.dt, base.duration, base.render.fps);
-        if (cmd.frame && (*cmd.frame < 0 || *cmd.frame >= tl.frames))
-            throw SceneError("--frame", std::to_string(*cmd.frame),
-                             "expected a frame index in [0, " + std::to_string(tl.frames - 1) +
-                                 "]");
+        check_frame_index(cmd, tl);
         lanes.resize(methods.size());
         for (std::size_t i = 0; i < methods.size(); ++i) {
             lanes[i].scene = base;
@@ -128,22 +120,15 @@ int run_compare(const RenderCommand& cmd) {
                                 std::to_string(tile_h) +
                                 " pixels are too small; give a larger --width/--height",
                             kBadInput);
-    const std::string output = cmd.output.empty() ? default_output(base) : cmd.output;
-    if (cmd.frame && !output.ends_with(".png"))
-        return report_error("--frame renders one still: the output must end in .png, got " + output,
-                            kBadInput);
+    const std::string output = output_name(cmd, base, "-compare");
+    if (const std::string problem = output_problem(cmd, output); !problem.empty())
+        return report_error(problem, kBadInput);
     std::unique_ptr<render::FrameSink> sink;
     try {
         const std::int64_t first = cmd.frame.value_or(0), last = cmd.frame.value_or(tl.frames - 1);
         for (Lane& lane : lanes)
             lane.frames = std::make_unique<FrameSource>(lane.scene, tl, lane.sim, first, last);
-        render::SinkOptions so;
-        so.width = base.render.width;
-        so.height = base.render.height;
-        so.fps = base.render.fps;
-        so.crf = cmd.crf;
-        so.preset = video_preset(cmd);
-        sink = render::open_sink(output, so);
+        sink = open_render_sink(cmd, base, output);
         RenderSettings tile_settings = base.render;
         tile_settings.width = tile_w;
         tile_settings.height = tile_h;

@@ -21,11 +21,6 @@
 namespace tumble::app {
 namespace {
 
-std::string default_output(const Scene& scene) {
-    std::string stem = std::filesystem::path(scene.source).stem().string();
-    return (stem.empty() ? "tumble" : stem) + ".mp4";
-}
-
 void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline& tl,
                    const Simulation& sim, const physics::Diagnostics& d0, const RunResult& r,
                    const render::FrameSink& sink, double wall) {
@@ -53,29 +48,16 @@ int run_render(const RenderCommand& cmd) {
         scene = load_for_command(cmd.common);
         apply_render_overrides(cmd, scene);
         tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
-        if (cmd.frame && (*cmd.frame < 0 || *cmd.frame >= tl.frames))
-            throw SceneError("--frame", std::to_string(*cmd.frame),
-                             "expected a frame index in [0, " + std::to_string(tl.frames - 1) +
-                                 "]");
+        check_frame_index(cmd, tl);
         sim = make_simulation(scene, tl.h, cmd.common.threads);
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     }
-    const std::string output = cmd.output.empty() ? default_output(scene) : cmd.output;
-    if (cmd.frame && !output.ends_with(".png"))
-        return report_error("--frame renders one still: the output must end in .png, got " + output,
-                            kBadInput);
+    const std::string output = output_name(cmd, scene);
+    if (const std::string problem = output_problem(cmd, output); !problem.empty())
+        return report_error(problem, kBadInput);
     try {
-        const auto parent = std::filesystem::path(output).parent_path();
-        if (!parent.empty() && output.find('%') == std::string::npos)
-            std::filesystem::create_directories(parent);
-        render::SinkOptions sink_options;
-        sink_options.width = scene.render.width;
-        sink_options.height = scene.render.height;
-        sink_options.fps = scene.render.fps;
-        sink_options.crf = cmd.crf;
-        sink_options.preset = video_preset(cmd);
-        sink = render::open_sink(output, sink_options);
+        sink = open_render_sink(cmd, scene, output);
         InterruptGuard guard;
         const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
         const auto t0 = std::chrono::steady_clock::now();

@@ -7,6 +7,8 @@
 
 #include <malloc.h>
 
+#include <filesystem>
+
 #include <cstdio>
 
 namespace tumble::app {
@@ -32,6 +34,38 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
                          std::to_string(rs.width) + "x" + std::to_string(rs.height),
                          "expected at least 16x16 pixels");
     if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
+}
+
+void check_frame_index(const RenderCommand& cmd, const Timeline& tl) {
+    if (cmd.frame && (*cmd.frame < 0 || *cmd.frame >= tl.frames))
+        throw SceneError("--frame", std::to_string(*cmd.frame),
+                         "expected a frame index in [0, " + std::to_string(tl.frames - 1) + "]");
+}
+
+std::string output_name(const RenderCommand& cmd, const Scene& scene, const std::string& suffix) {
+    if (!cmd.output.empty()) return cmd.output;
+    const std::string stem = std::filesystem::path(scene.source).stem().string();
+    return (stem.empty() ? "tumble" : stem) + suffix + ".mp4";
+}
+
+std::string output_problem(const RenderCommand& cmd, const std::string& output) {
+    if (cmd.frame && !output.ends_with(".png"))
+        return "--frame renders one still: the output must end in .png, got " + output;
+    return "";
+}
+
+std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
+                                                    const std::string& output) {
+    const auto parent = std::filesystem::path(output).parent_path();
+    if (!parent.empty() && output.find('%') == std::string::npos)
+        std::filesystem::create_directories(parent);
+    render::SinkOptions options;
+    options.width = scene.render.width;
+    options.height = scene.render.height;
+    options.fps = scene.render.fps;
+    options.crf = cmd.crf;
+    options.preset = video_preset(cmd);
+    return render::open_sink(output, options);
 }
 
 std::string video_preset(const RenderCommand& cmd) {

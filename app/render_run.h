@@ -23,6 +23,21 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
 // keeps it near the renderer's pace) and "veryfast" otherwise.
 std::string video_preset(const RenderCommand& cmd);
 
+// Throws SceneError when --frame names a frame outside the video.
+void check_frame_index(const RenderCommand& cmd, const Timeline& tl);
+
+// --output, or "<scene file stem><suffix>.mp4" ("tumble" for a scene without a file).
+std::string output_name(const RenderCommand& cmd, const Scene& scene,
+                        const std::string& suffix = "");
+
+// Why `output` cannot take this run ("" when it can): --frame writes one still, a .png.
+std::string output_problem(const RenderCommand& cmd, const std::string& output);
+
+// The sink for `output` at the scene's size and frame rate with the command's quality settings,
+// creating the output's folder first (not for a name with a %d pattern). Throws render::SinkError.
+std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
+                                                    const std::string& output);
+
 // The renderer's options for a scene's render settings.
 render::RenderOptions render_options(const RenderSettings& settings);
 
