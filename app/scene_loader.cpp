@@ -33,6 +33,9 @@ void read_world(JsonReader r, Scene& s) {
         c.substeps = v->integer(0, 64, "contact substeps per step (0: automatic)");
     if (auto v = r.optional("restitution_threshold"))
         c.restitution_threshold = v->non_negative("an impact speed >= 0 in m/s");
+    if (auto v = r.optional("parallel_min_bodies"))
+        c.parallel_min_bodies =
+            v->integer(0, 1 << 30, "a body count >= 0 from which --threads is used");
     r.finish();
 }
 

@@ -90,6 +90,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
         bench.counters[std::string("pct_") + stage_names[k]] = 100.0 * stage[k] / total;
     bench.counters["contacts"] = last.points;
     bench.counters["manifolds"] = last.manifolds;
+    bench.counters["workers"] = last.workers;
     bench.counters["max_penetration_mm"] = 1e3 * end.max_penetration;
     bench.counters["kinetic_energy_J"] = end.kinetic_energy;
     bench.counters["outside"] = end.outside;

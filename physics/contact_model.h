@@ -46,6 +46,13 @@ struct ContactSettings {
     double speculative_distance = 0.01; // m: contacts this far apart are kept (plus speed * h)
     double sleep_speed = 0.05;          // m/s: a body slower than this (at any point) may sleep
     double time_to_sleep = 0.5;         // s
+
+    // Scenes with fewer dynamic bodies step on one thread whatever the pool's size (the bits are
+    // the same either way). Measured on the project's 2-core VM (bench/sphere_rain_bench.cpp):
+    // a step of sphere rain N = 1000 hands out about a hundred jobs of a few microseconds, and
+    // two threads ran it at 0.66x of one thread's speed (0.74x with every colour on one thread);
+    // from 4096 bodies on the pool is used. Tests set 0 to run the parallel paths on any scene.
+    int parallel_min_bodies = 4096;
 };
 
 // Substeps of one step h: settings.substeps, or the fewest with h / n <= 1/480 s.

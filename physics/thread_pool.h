@@ -24,12 +24,31 @@ class ThreadPool {
     ThreadPool(const ThreadPool&) = delete;
     ThreadPool& operator=(const ThreadPool&) = delete;
 
-    int size() const { return size_; }
+    // Workers that run() uses: the team, or 1 inside a Serial section.
+    int size() const { return serial_ > 0 ? 1 : size_; }
+
+    // While a Serial section exists, run() and for_ranges() do all the work on the calling
+    // thread: for steps too small to pay for the hand-offs (see ContactStage::kParallelBodies).
+    // The results are the same bits either way.
+    class Serial {
+      public:
+        Serial(ThreadPool& pool, bool engage) : pool_(engage ? &pool : nullptr) {
+            if (pool_) ++pool_->serial_;
+        }
+        ~Serial() {
+            if (pool_) --pool_->serial_;
+        }
+        Serial(const Serial&) = delete;
+        Serial& operator=(const Serial&) = delete;
+
+      private:
+        ThreadPool* pool_;
+    };
 
     // fn(int worker); must not throw.
     template <class F>
     void run(F&& fn) {
-        if (size_ == 1) return fn(0);
+        if (size() == 1) return fn(0);
         dispatch(&call<F>, &fn);
     }
 
@@ -43,7 +62,7 @@ class ThreadPool {
     // result is the same either way; this only saves the hand-off).
     template <class F>
     void for_ranges(int n, int grain, F&& fn) {
-        if (size_ == 1 || n < grain) return fn(0, n, 0);
+        if (size() == 1 || n < grain) return fn(0, n, 0);
         run([&](int k) {
             int b, e;
             range(n, size_, k, b, e);
@@ -60,6 +79,7 @@ class ThreadPool {
     void worker_loop(int k);
 
     int size_;
+    int serial_ = 0; // Serial sections alive (only the calling thread touches it)
     std::vector<std::thread> threads_;
     void (*job_)(void*, int) = nullptr;
     void* ctx_ = nullptr;

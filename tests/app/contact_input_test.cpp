@@ -138,7 +138,8 @@ std::string pile_scene() {
                   std::to_string(y) + ", " + std::to_string(z) + "], \"angular_velocity\": [" +
                   std::to_string(0.3 * (i % 5)) + ", 1, 0]}";
     }
-    return R"({"format_version": 1, "world": {"duration": 1.5, "sleeping": false},)"
+    return R"({"format_version": 1, "world": {"duration": 1.5, "sleeping": false,)"
+           R"( "parallel_min_bodies": 0},)"
            R"( "bodies": [)" +
            bodies + "]}";
 }

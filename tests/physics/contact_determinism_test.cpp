@@ -30,6 +30,7 @@ struct Rain {
 
 State run(int threads, int steps) {
     Rain r;
+    r.model.contact.parallel_min_bodies = 0; // the parallel paths even for 1000 bodies
     StepWorkspace ws(threads);
     for (int k = 0; k < steps; ++k) step(r.model, r.state, ws);
     return r.state;
@@ -41,6 +42,20 @@ TEST(ContactDeterminism, TwoRunsAreBitIdentical) {
 
 TEST(ContactDeterminism, TwoThreadsGiveTheSingleThreadedBits) {
     EXPECT_EQ(state_hash(run(2, kSteps)), state_hash(run(1, kSteps)));
+}
+
+// Below ContactSettings::parallel_min_bodies dynamic bodies a step runs on one thread (the pool's
+// hand-offs cost more than they save there); at or above it, on the whole pool.
+TEST(ContactDeterminism, SmallScenesStepOnOneThread) {
+    Rain r;
+    StepWorkspace ws(2);
+    ASSERT_LT(static_cast<int>(r.model.dynamic_bodies.size()), r.model.contact.parallel_min_bodies);
+    step(r.model, r.state, ws);
+    EXPECT_EQ(ws.contacts.stats().workers, 1);
+    r.model.contact.parallel_min_bodies = 1000;
+    step(r.model, r.state, ws);
+    EXPECT_EQ(ws.contacts.stats().workers, 2);
+    EXPECT_EQ(ws.pool.size(), 2); // the pool is whole again after the step
 }
 
 TEST(ContactDeterminism, CopiedStateContinuesBitIdentically) {
