@@ -53,6 +53,9 @@ int run_render(const RenderCommand& cmd) {
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     }
+    if (const std::string note = threads_note(sim, cmd.common.threads);
+        !note.empty() && !cmd.common.quiet)
+        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     const std::string output = output_name(cmd, scene);
     if (const std::string problem = output_problem(cmd, output); !problem.empty())
         return report_error(problem, kBadInput);

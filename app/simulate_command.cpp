@@ -26,6 +26,9 @@ int run_simulate(const SimulateCommand& cmd) {
     } catch (const SceneError& e) {
         return report_error(e.what(), kBadInput);
     }
+    if (const std::string note = threads_note(sim, cmd.common.threads);
+        !note.empty() && !cmd.common.quiet)
+        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     try {
         TrajectoryWriter out(cmd.output, scene);
         InterruptGuard guard;

@@ -55,6 +55,23 @@ Simulation make_simulation(const Scene& scene, double dt, int threads) {
     }
 }
 
+std::string threads_note(const Simulation& sim, int threads) {
+    if (threads <= 1) return "";
+    const std::string asked = "--threads " + std::to_string(threads) + " not used: ";
+    const physics::Model& m = sim.model;
+    if (!m.passes.contacts)
+        return asked + "the scene has no contact stage (" + m.touch.why +
+               "), and only contacts run on several threads";
+    const auto bodies = static_cast<long long>(m.dynamic_bodies.size());
+    if (bodies < m.contact.parallel_min_bodies)
+        return asked + "the scene has " + std::to_string(bodies) +
+               (bodies == 1 ? " dynamic body" : " dynamic bodies") +
+               ", fewer than world.parallel_min_bodies (" +
+               std::to_string(m.contact.parallel_min_bodies) +
+               "); one thread is faster there (set it to 0 to use the threads anyway)";
+    return "";
+}
+
 std::vector<std::string> initial_state_warnings(const Scene& scene, const Simulation& sim) {
     std::vector<std::string> out;
     if (!sim.model.passes.contacts) return out;

@@ -26,6 +26,10 @@ struct Simulation {
 // the message mentions named.
 Simulation make_simulation(const Scene& scene, double dt, int threads = 1);
 
+// Why a run asked for `threads` > 1 physics threads steps on one: the scene has no contact stage,
+// or fewer dynamic bodies than world.parallel_min_bodies. Empty if the threads are used.
+std::string threads_note(const Simulation& sim, int threads);
+
 // Warnings about the initial state that do not stop the run: pairs of bodies starting deeply
 // interpenetrated (physics::deep_initial_overlaps), each naming both bodies.
 std::vector<std::string> initial_state_warnings(const Scene& scene, const Simulation& sim);

@@ -144,6 +144,32 @@ std::string pile_scene() {
            bodies + "]}";
 }
 
+// Asking for threads a scene will not use is said, with the reason and the way round it.
+TEST(ContactInput, UnusedThreadsAreReported) {
+    const auto dir = scratch_dir();
+    std::string pile = pile_scene();
+    const std::string forced = R"("parallel_min_bodies": 0)";
+    write_text(dir / "pile.json", pile);
+    pile.replace(pile.find(forced), forced.size(), R"("parallel_min_bodies": 100)");
+    write_text(dir / "small.json", pile);
+    write_text(dir / "free.json", R"({"format_version": 1, "world": {"duration": 0.1},)"
+                                  R"( "bodies": [{"shape": {"type": "box", "size": [1, 2, 3]}}]})");
+    const CliResult small = run_tumble(dir, "simulate small.json --threads 2 -o s.csv");
+    ASSERT_EQ(small.exit_code, 0) << small.err;
+    EXPECT_NE(small.err.find("--threads 2 not used: the scene has 24 dynamic bodies, fewer than "
+                             "world.parallel_min_bodies (100)"),
+              std::string::npos)
+        << small.err;
+    const CliResult free = run_tumble(dir, "simulate free.json --threads 2 -o f.csv");
+    ASSERT_EQ(free.exit_code, 0) << free.err;
+    EXPECT_NE(free.err.find("--threads 2 not used: the scene has no contact stage"),
+              std::string::npos)
+        << free.err;
+    const CliResult used = run_tumble(dir, "simulate pile.json --threads 2 -o p.csv");
+    ASSERT_EQ(used.exit_code, 0) << used.err;
+    EXPECT_EQ(used.err.find("not used"), std::string::npos) << used.err;
+}
+
 // Threads split the contact stage's work into fixed ranges: the states must be the same bits.
 TEST(ContactInput, SimulateGivesIdenticalStatesWithOneAndTwoPhysicsThreads) {
     const auto dir = scratch_dir();
