@@ -10,11 +10,14 @@
 
 #include <chrono>
 #include <cstdint>
+#include <exception>
+#include <span>
 #include <vector>
 
 namespace tumble::physics {
 
-using IntegrateFn = void (*)(const Model&, State&, double);
+// The named integrator over a list of dynamic bodies (integrators.h).
+using IntegrateFn = void (*)(const Model&, State&, double, std::span<const int>);
 
 // Milliseconds since the last lap (steady clock), for the profile.
 class Stopwatch {
@@ -67,6 +70,7 @@ class ContactStage {
     void wake_touched(const Model& m, State& s);
     void build_constraints(const Model& m, const State& s, ThreadPool& pool);
     void solve_and_integrate(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
+    void integrate_all(const Model& m, State& s, IntegrateFn integrate, double h, ThreadPool& pool);
     void store_impulses();
     void update_sleep(const Model& m, State& s);
 
@@ -105,6 +109,7 @@ class ContactStage {
     // Bodies the substeps touch.
     std::vector<int> constrained_, sleeping_;
     std::vector<Vec3> solved_v_, before_x_, sleep_x_;
+    std::vector<std::exception_ptr> integrate_errors_; // per worker
     std::vector<Quat> sleep_q_;
     std::vector<std::uint8_t> impact_flags_;
     std::vector<int> impact_count_, shifted_;

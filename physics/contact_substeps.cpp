@@ -40,7 +40,7 @@ void ContactStage::solve_and_integrate(const Model& m, State& s, IntegrateFn int
     if (manifolds_.empty()) {
         for (std::size_t k = 0; k < sleeping_.size(); ++k)
             sleep_x_[k] = s.x[sleeping_[k]], sleep_q_[k] = s.q[sleeping_[k]];
-        integrate(m, s, h_);
+        integrate_all(m, s, integrate, h_, pool);
         stats_.substeps = 1;
         for (std::size_t k = 0; k < sleeping_.size(); ++k) {
             const int i = sleeping_[k];
@@ -140,7 +140,7 @@ void ContactStage::solve_and_integrate(const Model& m, State& s, IntegrateFn int
         profile_.solve += clock.lap();
         for (std::size_t k = 0; k < sleeping_.size(); ++k)
             sleep_x_[k] = s.x[sleeping_[k]], sleep_q_[k] = s.q[sleeping_[k]];
-        integrate(m, s, h);
+        integrate_all(m, s, integrate, h, pool);
         for (std::size_t k = 0; k < sleeping_.size(); ++k) {
             const int i = sleeping_[k];
             s.x[i] = sleep_x_[k], s.q[i] = sleep_q_[k];
@@ -162,6 +162,25 @@ void ContactStage::solve_and_integrate(const Model& m, State& s, IntegrateFn int
         profile_.solve += clock.lap();
     }
     for (int i : shifted_) s.x[i] += shift_[i];
+}
+
+// The integrator over every dynamic body, in fixed contiguous ranges per worker: a body's update
+// touches only its own state, so the bits are those of one thread. An integrator that fails
+// (midpoint's Newton solve throws DivergenceError) may do so on any worker; the error of the
+// lowest range is rethrown, which is the body a single thread would have stopped at.
+void ContactStage::integrate_all(const Model& m, State& s, IntegrateFn integrate, double h,
+                                 ThreadPool& pool) {
+    const std::span<const int> all(m.dynamic_bodies);
+    integrate_errors_.assign(pool.size(), nullptr);
+    pool.for_ranges(static_cast<int>(all.size()), 256, [&](int begin, int end, int worker) {
+        try {
+            integrate(m, s, h, all.subspan(begin, end - begin));
+        } catch (...) {
+            integrate_errors_[worker] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& e : integrate_errors_)
+        if (e) std::rethrow_exception(e);
 }
 
 void ContactStage::store_impulses() {

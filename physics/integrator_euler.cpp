@@ -44,9 +44,9 @@ Quat same_hemisphere(const Quat& q, const Quat& previous) {
 
 } // namespace
 
-void integrate_euler(const Model& m, State& s, double h) {
+void integrate_euler(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) {
+    for (int i : bodies) {
         const Vec3 v = s.v[i], w = s.w[i];
         const Mat3 R = s.q[i].toRotationMatrix();
         add_compensated(s.x[i], s.x_carry[i], h * v);

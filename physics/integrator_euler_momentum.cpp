@@ -22,9 +22,9 @@
 
 namespace tumble::physics {
 
-void integrate_euler_momentum(const Model& m, State& s, double h) {
+void integrate_euler_momentum(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) {
+    for (int i : bodies) {
         const Quat q = s.q[i];
         add_compensated(s.x[i], s.x_carry[i], h * s.v[i]); // P / m = v
         if (loads) s.v[i] += h * m.inv_mass[i] * net_force(m, i);

@@ -33,9 +33,9 @@
 
 namespace tumble::physics {
 
-void integrate_implicit_gyro(const Model& m, State& s, double h) {
+void integrate_implicit_gyro(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) {
+    for (int i : bodies) {
         const Quat q = s.q[i];
         if (loads) {
             s.v[i] += h * m.inv_mass[i] * net_force(m, i);

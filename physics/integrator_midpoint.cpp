@@ -72,9 +72,9 @@ void half_kick(const Model& m, State& s, int i, double h) {
 
 } // namespace
 
-void integrate_midpoint(const Model& m, State& s, double h) {
+void integrate_midpoint(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) {
+    for (int i : bodies) {
         if (loads) half_kick(m, s, i, h);
         add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
         if (anisotropic(m, i)) {

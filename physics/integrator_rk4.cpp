@@ -41,8 +41,8 @@ Rates rates(const Model& m, int i, const Vec3& v, const Quat& q, const Vec3& w, 
 
 } // namespace
 
-void integrate_rk4(const Model& m, State& s, double h) {
-    for (int i : m.dynamic_bodies) {
+void integrate_rk4(const Model& m, State& s, double h, std::span<const int> bodies) {
+    for (int i : bodies) {
         const Vec3 accel = m.inv_mass[i] * net_force(m, i); // F = m a, constant over the step
         const Vec3 tau = net_torque(m, i);
         const Vec3 v = s.v[i], w = s.w[i];

@@ -102,9 +102,9 @@ void splitting_step(const Model& m, State& s, int i, double h, bool loads) {
     if (loads) half_kick(m, s, i, h);
 }
 
-void integrate_splitting(const Model& m, State& s, double h) {
+void integrate_splitting(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) splitting_step(m, s, i, h, loads);
+    for (int i : bodies) splitting_step(m, s, i, h, loads);
 }
 
 } // namespace tumble::physics

@@ -22,9 +22,9 @@
 
 namespace tumble::physics {
 
-void integrate_symplectic_euler(const Model& m, State& s, double h) {
+void integrate_symplectic_euler(const Model& m, State& s, double h, std::span<const int> bodies) {
     const bool loads = loads_on(m);
-    for (int i : m.dynamic_bodies) {
+    for (int i : bodies) {
         if (loads) s.v[i] += h * m.inv_mass[i] * net_force(m, i);
         if (loads || anisotropic(m, i))
             s.w[i] += h * angular_acceleration(m, i, s.q[i], s.w[i], net_torque(m, i));

@@ -75,31 +75,31 @@ void check_finite(const Model& m, const State& s) {
 namespace {
 
 // The named integrator over one step or substep h (a switch per call, no virtual call per body).
-void integrate(const Model& m, State& s, double h) {
+void integrate(const Model& m, State& s, double h, std::span<const int> bodies) {
     switch (m.integrator) {
     case Integrator::Euler:
-        integrate_euler(m, s, h);
+        integrate_euler(m, s, h, bodies);
         break;
     case Integrator::EulerMomentum:
-        integrate_euler_momentum(m, s, h);
+        integrate_euler_momentum(m, s, h, bodies);
         break;
     case Integrator::SymplecticEuler:
-        integrate_symplectic_euler(m, s, h);
+        integrate_symplectic_euler(m, s, h, bodies);
         break;
     case Integrator::ImplicitGyro:
-        integrate_implicit_gyro(m, s, h);
+        integrate_implicit_gyro(m, s, h, bodies);
         break;
     case Integrator::Rk4:
-        integrate_rk4(m, s, h);
+        integrate_rk4(m, s, h, bodies);
         break;
     case Integrator::Splitting:
-        integrate_splitting(m, s, h);
+        integrate_splitting(m, s, h, bodies);
         break;
     case Integrator::Midpoint:
-        integrate_midpoint(m, s, h);
+        integrate_midpoint(m, s, h, bodies);
         break;
     case Integrator::Splitting4:
-        integrate_splitting4(m, s, h);
+        integrate_splitting4(m, s, h, bodies);
         break;
     }
 }
@@ -121,7 +121,7 @@ void step(const Model& m, State& s, StepWorkspace& workspace) {
     if (m.passes.contacts)
         workspace.contacts.step(m, s, integrate, workspace.pool);
     else
-        integrate(m, s, m.dt);
+        integrate(m, s, m.dt, m.dynamic_bodies);
     ++s.step;
     check_finite(m, s);
 }
