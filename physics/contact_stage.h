@@ -44,7 +44,7 @@ struct ContactStats {
     int impacts = 0;     // impact sweeps that applied an impulse
     int awake = 0;       // dynamic bodies simulated (not asleep)
     int substeps = 0;
-    int workers = 1;        // threads the step used (1 below kParallelBodies dynamic bodies)
+    int workers = 1;        // threads the step used (ContactSettings::parallel_min_bodies)
     double max_overlap = 0; // m, deepest contact point at the start of the step
 };
 

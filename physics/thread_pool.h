@@ -28,7 +28,7 @@ class ThreadPool {
     int size() const { return serial_ > 0 ? 1 : size_; }
 
     // While a Serial section exists, run() and for_ranges() do all the work on the calling
-    // thread: for steps too small to pay for the hand-offs (see ContactStage::kParallelBodies).
+    // thread: for steps too small to pay for the hand-offs (ContactSettings::parallel_min_bodies).
     // The results are the same bits either way.
     class Serial {
       public:
