@@ -78,14 +78,7 @@ bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverB
         any = true;
 
         // Friction during the impact, within this impact's Coulomb cone.
-        const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
-        double l1 = p.impact_friction[0], l2 = p.impact_friction[1];
-        coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * p.impact_normal, l1, l2);
-        const Vec3 f = (l1 - p.impact_friction[0]) * c.t1 + (l2 - p.impact_friction[1]) * c.t2;
-        p.impact_friction[0] = l1;
-        p.impact_friction[1] = l2;
-        apply(A, va, p.ra, -f);
-        apply(B, vb, p.rb, f);
+        friction_at_point(c, p, A, B, p.impact_normal, p.impact_friction, va, vb);
     }
     store(s, c.a, c.move_a, va);
     store(s, c.b, c.move_b, vb);

@@ -89,4 +89,21 @@ inline void coulomb(const TangentMass& mass, double v1, double v2, double limit,
     }
 }
 
+// Friction at one point of manifold c: the accumulated tangent impulse `lambda` (along t1, t2)
+// takes one coulomb() update for the slip at the point, within mu times `normal_impulse`, and the
+// change is applied to both bodies. Used by the solver (the step's impulses) and by the impacts
+// (each impact's own).
+inline void friction_at_point(const SolverManifold& c, const SolverPoint& p, const BodyView& A,
+                              const BodyView& B, double normal_impulse, double lambda[2],
+                              Velocity& va, Velocity& vb) {
+    const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
+    double l1 = lambda[0], l2 = lambda[1];
+    coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * normal_impulse, l1, l2);
+    const Vec3 impulse = (l1 - lambda[0]) * c.t1 + (l2 - lambda[1]) * c.t2;
+    lambda[0] = l1;
+    lambda[1] = l2;
+    apply(A, va, p.ra, -impulse);
+    apply(B, vb, p.rb, impulse);
+}
+
 } // namespace tumble::physics

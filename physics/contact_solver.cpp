@@ -109,15 +109,7 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBo
     // Friction: both tangent directions at once, within the disc |lambda_t| <= mu lambda_n.
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
-        const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
-        double l1 = p.friction_impulse[0], l2 = p.friction_impulse[1];
-        coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * p.normal_impulse, l1, l2);
-        const Vec3 impulse =
-            (l1 - p.friction_impulse[0]) * c.t1 + (l2 - p.friction_impulse[1]) * c.t2;
-        p.friction_impulse[0] = l1;
-        p.friction_impulse[1] = l2;
-        apply(A, va, p.ra, -impulse);
-        apply(B, vb, p.rb, impulse);
+        friction_at_point(c, p, A, B, p.normal_impulse, p.friction_impulse, va, vb);
     }
     store(s, c.a, c.move_a, va);
     store(s, c.b, c.move_b, vb);
