@@ -96,6 +96,9 @@ inline void coulomb(const TangentMass& mass, double v1, double v2, double limit,
 inline void friction_at_point(const SolverManifold& c, const SolverPoint& p, const BodyView& A,
                               const BodyView& B, double normal_impulse, double lambda[2],
                               Velocity& va, Velocity& vb) {
+    // No push and no friction yet (a speculative point, not touching: about half the points of
+    // a sphere rain): the disc has radius 0 and lambda is already at its centre. Nothing to do.
+    if (normal_impulse == 0.0 && lambda[0] == 0.0 && lambda[1] == 0.0) return;
     const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
     double l1 = lambda[0], l2 = lambda[1];
     coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * normal_impulse, l1, l2);

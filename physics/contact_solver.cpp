@@ -59,6 +59,8 @@ void warm_start(const SolverManifold& c, const SolverPoint* points, const Solver
     Velocity va = load(s, c.a), vb = load(s, c.b);
     for (int k = 0; k < c.count; ++k) {
         const SolverPoint& p = points[k];
+        if (p.normal_impulse == 0.0 && p.friction_impulse[0] == 0.0 && p.friction_impulse[1] == 0.0)
+            continue; // nothing to warm start with (a speculative point, not touching)
         const Vec3 impulse = p.normal_impulse * c.normal + p.friction_impulse[0] * c.t1 +
                              p.friction_impulse[1] * c.t2;
         apply(A, va, p.ra, -impulse);

@@ -35,7 +35,9 @@ Quat add_scaled(const Quat& q, double s, const Quat& dq) {
 
 Rates rates(const Model& m, int i, const Vec3& v, const Quat& q, const Vec3& w, const Vec3& accel,
             const Vec3& tau) {
-    const Quat unit = q.normalized(); // stage quaternions leave the unit sphere; R uses q/|q|
+    // Stage quaternions leave the unit sphere, so R is taken from q/|q|; an isotropic body's
+    // angular acceleration needs no R (rigid_body.h), and no square root is spent on it.
+    const Quat unit = anisotropic(m, i) ? q.normalized() : q;
     return {v, accel, quat_derivative(w, q), angular_acceleration(m, i, unit, w, tau)};
 }
 

@@ -31,9 +31,4 @@ double rotation_angle_between(const Quat& a, const Quat& b) {
     return quat_log(a.conjugate() * b).norm();
 }
 
-Quat quat_derivative(const Vec3& w, const Quat& q) {
-    const Quat wq = Quat(0.0, w.x(), w.y(), w.z()) * q;
-    return Quat(0.5 * wq.w(), 0.5 * wq.x(), 0.5 * wq.y(), 0.5 * wq.z());
-}
-
 } // namespace tumble::physics

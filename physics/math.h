@@ -28,7 +28,10 @@ Vec3 quat_log(const Quat& q);
 double rotation_angle_between(const Quat& a, const Quat& b);
 
 // Quaternion time derivative for world angular velocity w: dq/dt = 1/2 (0, w) (x) q.
-Quat quat_derivative(const Vec3& w, const Quat& q);
+inline Quat quat_derivative(const Vec3& w, const Quat& q) {
+    const Quat wq = Quat(0.0, w.x(), w.y(), w.z()) * q;
+    return Quat(0.5 * wq.w(), 0.5 * wq.x(), 0.5 * wq.y(), 0.5 * wq.z());
+}
 
 inline bool all_finite(const Vec3& v) {
     return v.allFinite();
