@@ -103,6 +103,7 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBo
         double delta = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
         const double next = std::max(p.normal_impulse + delta, 0.0);
         delta = next - p.normal_impulse;
+        if (delta == 0.0) continue; // held at zero: a speculative point that stays apart
         p.normal_impulse = next;
         apply(A, va, p.ra, -delta * n);
         apply(B, vb, p.rb, delta * n);
