@@ -162,5 +162,34 @@ TEST(ContactPhysics, FastBallStopsAtThinWall) {
     }
 }
 
+// A speculative contact that never closes applies nothing: two spheres at rest 5 mm apart (inside
+// the 1 cm speculative distance), without gravity, keep a manifold every step and stay exactly
+// where they are, with exactly zero velocity. The solver skips such points (no push, no friction
+// yet); a bias or a friction impulse that leaked into them would move the spheres.
+TEST(ContactPhysics, SpeculativeContactAtRestAppliesNothing) {
+    for (double dt : kSteps) {
+        test::Scene scene;
+        scene.world.dt = dt;
+        scene.world.gravity = Vec3::Zero();
+        scene.world.contact.sleeping = false;
+        for (double x : {-0.1025, 0.1025}) {
+            BodyDef ball;
+            ball.shape = Shape::sphere(0.1);
+            ball.mass = 1.0;
+            ball.position = Vec3(x, 0.0, 0.0);
+            scene.bodies.push_back(ball);
+        }
+        Sim run(scene);
+        const State start = run.state;
+        run.steps(run.steps_for(2.0));
+        EXPECT_EQ(run.state.contacts.size(), 1) << "dt = " << dt;
+        for (int i = 0; i < 2; ++i) {
+            EXPECT_EQ(run.state.x[i], start.x[i]) << "dt = " << dt << ", ball " << i;
+            EXPECT_EQ(run.state.v[i], Vec3::Zero()) << "dt = " << dt << ", ball " << i;
+            EXPECT_EQ(run.state.w[i], Vec3::Zero()) << "dt = " << dt << ", ball " << i;
+        }
+    }
+}
+
 } // namespace
 } // namespace tumble::physics
