@@ -62,6 +62,12 @@ inline double effective_mass(const BodyView& a, const BodyView& b, const Vec3& r
            rbd.dot(inv_inertia_times(b, rbd));
 }
 
+// A point that carries no impulse yet: no push, no friction. About half the points of a sphere
+// rain are such speculative points (close, not touching); warming or rubbing them is a no-op.
+inline bool no_impulse(double normal_impulse, const double lambda[2]) {
+    return normal_impulse == 0.0 && lambda[0] == 0.0 && lambda[1] == 0.0;
+}
+
 // Coulomb friction at one point, for the accumulated tangent impulse (l1, l2) and the tangential
 // slip velocity (v1, v2). Sticking: the impulse that stops the slip exactly, l - K^-1 v with K the
 // 2x2 effective-mass matrix of the two tangents, if it lies in the disc |l| <= limit. Otherwise
@@ -96,9 +102,8 @@ inline void coulomb(const TangentMass& mass, double v1, double v2, double limit,
 inline void friction_at_point(const SolverManifold& c, const SolverPoint& p, const BodyView& A,
                               const BodyView& B, double normal_impulse, double lambda[2],
                               Velocity& va, Velocity& vb) {
-    // No push and no friction yet (a speculative point, not touching: about half the points of
-    // a sphere rain): the disc has radius 0 and lambda is already at its centre. Nothing to do.
-    if (normal_impulse == 0.0 && lambda[0] == 0.0 && lambda[1] == 0.0) return;
+    // No push and no friction yet: the disc has radius 0 and lambda is at its centre already.
+    if (no_impulse(normal_impulse, lambda)) return;
     const Vec3 vr = relative_velocity(va, vb, p.ra, p.rb);
     double l1 = lambda[0], l2 = lambda[1];
     coulomb(p.tangent_mass, c.t1.dot(vr), c.t2.dot(vr), c.friction * normal_impulse, l1, l2);

@@ -59,8 +59,7 @@ void warm_start(const SolverManifold& c, const SolverPoint* points, const Solver
     Velocity va = load(s, c.a), vb = load(s, c.b);
     for (int k = 0; k < c.count; ++k) {
         const SolverPoint& p = points[k];
-        if (p.normal_impulse == 0.0 && p.friction_impulse[0] == 0.0 && p.friction_impulse[1] == 0.0)
-            continue; // nothing to warm start with (a speculative point, not touching)
+        if (no_impulse(p.normal_impulse, p.friction_impulse)) continue; // nothing to warm with
         const Vec3 impulse = p.normal_impulse * c.normal + p.friction_impulse[0] * c.t1 +
                              p.friction_impulse[1] * c.t2;
         apply(A, va, p.ra, -impulse);
@@ -103,7 +102,7 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBo
         double delta = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
         const double next = std::max(p.normal_impulse + delta, 0.0);
         delta = next - p.normal_impulse;
-        if (delta == 0.0) continue; // held at zero: a speculative point that stays apart
+        if (delta == 0.0) continue; // no change: most often a speculative point held at zero
         p.normal_impulse = next;
         apply(A, va, p.ra, -delta * n);
         apply(B, vb, p.rb, delta * n);
