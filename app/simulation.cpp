@@ -63,7 +63,7 @@ std::string threads_note(const Simulation& sim, int threads) {
         return asked + "the scene has no contact stage (" + m.touch.why +
                "), and only contacts run on several threads";
     const auto bodies = static_cast<long long>(m.dynamic_bodies.size());
-    if (bodies < m.contact.parallel_min_bodies)
+    if (physics::steps_on_one_thread(m.contact, m.dynamic_bodies.size()))
         return asked + "the scene has " + std::to_string(bodies) +
                (bodies == 1 ? " dynamic body" : " dynamic bodies") +
                ", fewer than world.parallel_min_bodies (" +

@@ -3,6 +3,7 @@
 // settings. Filled for every scene; used only when Model::passes.contacts is on.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace tumble::physics {
 
@@ -54,6 +55,11 @@ struct ContactSettings {
     // from 4096 bodies on the pool is used. Tests set 0 to run the parallel paths on any scene.
     int parallel_min_bodies = 4096;
 };
+
+// The policy above: a contact step with this many dynamic bodies runs on the calling thread.
+inline bool steps_on_one_thread(const ContactSettings& s, std::size_t dynamic_bodies) {
+    return static_cast<long long>(dynamic_bodies) < s.parallel_min_bodies;
+}
 
 // Substeps of one step h: settings.substeps, or the fewest with h / n <= 1/480 s.
 inline int substep_count(const ContactSettings& s, double h) {

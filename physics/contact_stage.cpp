@@ -129,8 +129,7 @@ void ContactStage::build_constraints(const Model& m, const State& s, ThreadPool&
 
 void ContactStage::step(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool) {
     h_ = m.dt;
-    const ThreadPool::Serial serial(pool,
-                                    std::ssize(m.dynamic_bodies) < m.contact.parallel_min_bodies);
+    const ThreadPool::Serial serial(pool, steps_on_one_thread(m.contact, m.dynamic_bodies.size()));
     stats_.workers = pool.size();
     Stopwatch clock;
     prepare_bodies(m, s, pool);
