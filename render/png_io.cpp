@@ -1,6 +1,6 @@
 #include "render/png_io.h"
 
-#include "render/atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <png.h>
 #include <stb_image.h>
@@ -131,7 +131,7 @@ void check_writable_image(const fs::path& path, const Image& image) {
 
 void write_png(const fs::path& path, const Image& image, const PngWriteOptions& options) {
     check_writable_image(path, image);
-    AtomicFile atomic(path); // deletes the temporary file on every early exit
+    io::AtomicFile atomic(path); // deletes the temporary file on every early exit
     File file(std::fopen(atomic.temp_path().c_str(), "wb"));
     if (!file) {
         const int error = errno; // before anything else can change it
@@ -154,7 +154,7 @@ void write_png(const fs::path& path, const Image& image, const PngWriteOptions& 
     }
     try {
         atomic.commit();
-    } catch (const FileError& e) {
+    } catch (const io::FileError& e) {
         throw PngError(e.what());
     }
 }

@@ -78,8 +78,8 @@ PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& option
     : pattern_(std::move(pattern)), options_(options) {
     const fs::path dir = fs::path(pattern_.name(0)).parent_path();
     try {
-        if (ensure_writable_directory(dir)) created_directory_ = dir;
-    } catch (const FileError& e) {
+        if (io::ensure_writable_directory(dir)) created_directory_ = dir;
+    } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + pattern_.text + "': " + e.what());
     }
 }
@@ -119,8 +119,8 @@ void PngSequenceSink::abort() noexcept {
 PngStillSink::PngStillSink(const fs::path& path, const SinkOptions& options)
     : file_(path), options_(options) {
     try {
-        ensure_writable_directory(path.parent_path());
-    } catch (const FileError& e) {
+        io::ensure_writable_directory(path.parent_path());
+    } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + path.string() + "': " + e.what());
     }
 }
@@ -147,7 +147,7 @@ void PngStillSink::finish() {
     try {
         if (frames_ == 0) throw SinkError("no frame was written to '" + describe() + "'");
         file_.commit();
-    } catch (const FileError& e) {
+    } catch (const io::FileError& e) {
         abort();
         throw SinkError(e.what());
     } catch (...) {

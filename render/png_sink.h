@@ -1,6 +1,6 @@
 #pragma once
 // PNG outputs: a numbered sequence (one file per frame) or a single still.
-#include "render/atomic_file.h"
+#include "io/atomic_file.h"
 #include "render/frame_sink.h"
 
 #include <filesystem>
@@ -63,7 +63,7 @@ class PngStillSink final : public FrameSink {
     std::int64_t frames_written() const override { return frames_; }
 
   private:
-    AtomicFile file_;
+    io::AtomicFile file_;
     SinkOptions options_;
     std::int64_t frames_ = 0;
     bool done_ = false;

@@ -235,8 +235,8 @@ VideoSink::VideoSink(const fs::path& output, const SinkOptions& options)
     const Format kind = format_of(output);
     check_options(output.string(), options, kind);
     try {
-        ensure_writable_directory(output.parent_path());
-    } catch (const FileError& e) {
+        io::ensure_writable_directory(output.parent_path());
+    } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + output.string() + "': " + e.what());
     }
     encoder_ = std::make_unique<Encoder>();
@@ -280,7 +280,7 @@ void VideoSink::finish() {
         encoder_->check(avio_closep(&encoder_->format->pb), "closing the file");
         encoder_.reset();
         file_.commit();
-    } catch (const FileError& e) {
+    } catch (const io::FileError& e) {
         abort();
         throw SinkError(e.what());
     } catch (...) {

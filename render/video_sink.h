@@ -25,7 +25,7 @@
 //    - no wall-clock time in the file (the MP4 creation time stays 0).
 //    Different FFmpeg or x264 versions may still encode differently (and record their versions).
 // The file is written as ".NAME.<pid>.partial" in the same directory and renamed in finish().
-#include "render/atomic_file.h"
+#include "io/atomic_file.h"
 #include "render/frame_sink.h"
 
 #include <filesystem>
@@ -48,7 +48,7 @@ class VideoSink final : public FrameSink {
 
   private:
     struct Encoder; // the libav objects; kept out of this header
-    AtomicFile file_;
+    io::AtomicFile file_;
     SinkOptions options_;
     std::unique_ptr<Encoder> encoder_;
     std::int64_t frames_ = 0;

@@ -14,7 +14,7 @@ packages=(
   libosmesa6-dev libglm-dev libstb-dev libpng-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   nlohmann-json3-dev libcli11-dev
-  # Mesh bodies read Wavefront OBJ files (app/obj_mesh.h): a small, maintained parser instead of
+  # Mesh bodies read Wavefront OBJ files (app/scene/obj_mesh.h): a small, maintained parser instead of
   # a hand-written one; its CMake config is found with no download.
   libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -72,7 +72,7 @@ TEST(Compare, ADivergingMethodFreezesWhileTheOthersGoOn) {
     const CliResult r = run_tumble(dir, "render s.json --compare euler,rk4 --fps 5 --dt 0.2 "
                                         "--duration 10 --width 162 --height 48 -o d.mp4");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("euler diverged: body 0"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("euler diverged: s.json: body 0"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("rk4: energy"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("wrote d.mp4 (50 frames"), std::string::npos) << r.err;
 }

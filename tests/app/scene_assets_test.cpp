@@ -3,10 +3,10 @@
 // builder (bench/sphere_rain.h); mesh files resolve next to the scene first, then among the
 // bundled meshes; capsules and meshes are drawn as their shapes.
 #include "app/cli_runner.h"
-#include "app/scene.h"
-#include "app/scene_error.h"
-#include "app/simulation.h"
-#include "app/view_builder.h"
+#include "app/run/simulation.h"
+#include "app/scene/scene.h"
+#include "app/scene/scene_error.h"
+#include "app/view/view_builder.h"
 #include "bench/sphere_rain.h"
 #include "measured.h"
 

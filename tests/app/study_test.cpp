@@ -2,7 +2,7 @@
 // integrator is studied on every problem, measured orders match theory, divergences are recorded as
 // results, and the recommendation table follows from the rows (checked here independently).
 #include "app/cli_runner.h"
-#include "app/study.h"
+#include "app/study/study.h"
 #include "measured.h"
 #include "physics/integrator.h"
 #include "render/png_io.h"

@@ -1,7 +1,7 @@
-// The teaching arrows (app/vector_arrows.h): for a torque-free tumbling book the angular momentum
-// arrow must stay fixed in space while the angular velocity arrow wanders, and lengths must
-// follow the magnitudes.
-#include "app/vector_arrows.h"
+// The teaching arrows (app/view/vector_arrows.h): for a torque-free tumbling book the angular
+// momentum arrow must stay fixed in space while the angular velocity arrow wanders, and lengths
+// must follow the magnitudes.
+#include "app/view/vector_arrows.h"
 
 #include "measured.h"
 #include "physics/build.h"

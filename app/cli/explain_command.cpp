@@ -1,0 +1,122 @@
+// `tumble explain`: prints the model that will run: bodies, loads, integrator, and which stages of
+// the step are on and why, contacts included ("model only what a scene requires").
+#include "app/cli/failure.h"
+#include "app/cli/scene_options.h"
+#include "app/cli/subcommand.h"
+#include "app/run/simulation.h"
+#include "app/run/timeline.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace tumble::app {
+namespace {
+
+void print_bodies(const Scene& scene, const physics::Model& m) {
+    std::printf("bodies (%d, %zu dynamic):\n", m.body_count(), m.dynamic_bodies.size());
+    for (int i = 0; i < m.body_count(); ++i) {
+        const physics::Vec3& I = m.inertia[i];
+        std::printf("  %3d %-16s %-6s", i, scene.looks[i].name.c_str(),
+                    physics::shape_name(m.shape[i].kind));
+        if (!m.is_dynamic(i)) {
+            std::printf(" static\n");
+            continue;
+        }
+        std::printf(" m = %.6g kg, I = (%.6g, %.6g, %.6g) kg m^2%s, gravity x%.3g\n", m.mass[i],
+                    I.x(), I.y(), I.z(), m.isotropic[i] ? " isotropic" : "", m.gravity_scale[i]);
+    }
+}
+
+// How many dynamic bodies need each pass (the reason a pass is on, in numbers).
+struct PassCounts {
+    int dynamic = 0, gravity = 0, loaded = 0, anisotropic = 0;
+};
+
+PassCounts count_passes(const physics::Model& m) {
+    PassCounts c;
+    for (int i : m.dynamic_bodies) {
+        ++c.dynamic;
+        c.gravity += m.gravity_scale[i] != 0.0 && m.gravity != physics::Vec3::Zero();
+        c.loaded += m.applied_force[i] != physics::Vec3::Zero() ||
+                    m.applied_torque[i] != physics::Vec3::Zero();
+        c.anisotropic += !m.isotropic[i];
+    }
+    return c;
+}
+
+// The contact stage and its reason (physics/can_touch.h), its substeps and sleeping.
+void print_contacts(const physics::Model& m) {
+    const physics::TouchReport& t = m.touch;
+    if (!m.passes.contacts) {
+        std::printf("  contacts       off: %s\n", t.why.c_str());
+        return;
+    }
+    int shapes = 0;
+    for (int i = 0; i < m.body_count(); ++i) shapes += !m.is_dynamic(i);
+    const int substeps = physics::substep_count(m.contact, m.dt);
+    std::printf("  contacts       on: %s (first of %lld pairs checked); %d bodies collide "
+                "(%d static, %zu dynamic); %d substep%s of %.3g ms per step; ",
+                t.why.c_str(), t.pairs_checked, m.body_count(), shapes, m.dynamic_bodies.size(),
+                substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps);
+    if (m.contact.sleeping)
+        std::printf("sleeping on (bodies slower than %g m/s for %g s stop)\n",
+                    m.contact.sleep_speed, m.contact.time_to_sleep);
+    else
+        std::printf("sleeping off\n");
+}
+
+void print_passes(const physics::Model& m) {
+    const physics::Passes& p = m.passes;
+    const PassCounts c = count_passes(m);
+    std::printf("step stages:\n");
+    if (p.gravity)
+        std::printf("  gravity        on: %d of %d dynamic bodies feel g * gravity_scale != 0\n",
+                    c.gravity, c.dynamic);
+    else
+        std::printf("  gravity        off: g = 0 or every gravity_scale is 0 (no gravity work)\n");
+    if (p.applied_loads)
+        std::printf("  applied loads  on: %d of %d dynamic bodies have a force or torque\n",
+                    c.loaded, c.dynamic);
+    else
+        std::printf("  applied loads  off: no body has an applied force or torque%s\n",
+                    p.gravity ? "" : " (no velocity kicks at all)");
+    if (p.gyroscopic)
+        std::printf("  gyroscopic     on: %d of %d dynamic bodies have unequal moments%s\n",
+                    c.anisotropic, c.dynamic,
+                    c.anisotropic < c.dynamic ? " (the isotropic skip it: w x I w = 0)" : "");
+    else
+        std::printf("  gyroscopic     off: every dynamic body is isotropic (w x I w = 0)\n");
+    print_contacts(m);
+    const physics::IntegratorInfo& info = physics::integrator_info(m.integrator);
+    std::printf("  integrate      %s (order %d): %s\n", std::string(info.name).c_str(), info.order,
+                std::string(info.summary).c_str());
+    std::printf(
+        "  check finite   on: a NaN or infinite state stops the run naming body and step\n");
+}
+
+int run_explain(const SceneOptions& opts) {
+    const Scene scene = load_for_command(opts);
+    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    const Simulation sim = make_simulation(scene, tl.h);
+    std::printf("scene: %s%s%s\n", scene.source.c_str(), scene.title.empty() ? "" : " - ",
+                scene.title.c_str());
+    const physics::Vec3& g = sim.model.gravity;
+    std::printf("world: gravity (%g, %g, %g) m/s^2, duration %g s\n", g.x(), g.y(), g.z(),
+                scene.duration);
+    std::printf("time: %s\n", tl.describe().c_str());
+    print_bodies(scene, sim.model);
+    print_passes(sim.model);
+    return kOk;
+}
+
+} // namespace
+
+Subcommand add_explain_command(CLI::App& app) {
+    auto opts = std::make_shared<SceneOptions>();
+    CLI::App* e =
+        app.add_subcommand("explain", "print the model that will run and which stages are on");
+    add_scene_options(e, *opts);
+    return {[e] { return e->parsed(); }, [opts] { return run_explain(*opts); }};
+}
+
+} // namespace tumble::app

@@ -1,0 +1,123 @@
+// `tumble render`: step the scene and draw frame k at exactly t = k / fps into a video, a PNG
+// sequence or a single still.
+// The frames go through the pipeline of app/run/pipeline.h (physics, render and output on their
+// own threads); --stats prints each stage's rate. With --compare, compare_command.cpp draws
+// several integrators side by side instead.
+#include "app/cli/compare_command.h"
+#include "app/cli/failure.h"
+#include "app/cli/render_setup.h"
+#include "app/cli/subcommand.h"
+#include "app/run/interrupt.h"
+#include "app/run/render_frames.h"
+#include "app/run/simulation.h"
+#include "physics/diagnostics.h"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace tumble::app {
+namespace {
+
+void add_render_options(CLI::App* r, RenderCommand& render) {
+    add_scene_options(r, render.common);
+    r->add_option("-o,--output", render.output,
+                  "out.mp4 | frames/ | frames/%06d.png | still.png (default: <scene>.mp4)");
+    r->add_option("--width", render.width, "image width, pixels (even for MP4)");
+    r->add_option("--height", render.height, "image height, pixels (even for MP4)");
+    r->add_option("--fps", render.fps, "frames per second");
+    r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
+    r->add_option(
+         "--crf", render.crf,
+         "quality, lower is better: H.264 (.mp4) 0..51, VP9 (.webm) 0..63 (checked by the sink)")
+        ->check(CLI::Range(0, 63));
+    r->add_option(
+        "--preset", render.preset,
+        "encoder preset, ultrafast .. veryslow (default veryfast; ultrafast with --preview)");
+    r->add_flag("--preview", render.preview,
+                "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
+}
+
+// On/off pairs that override the scene's render settings only when given.
+void add_switches(CLI::App* r, RenderCommand& render) {
+    auto on_off = [r](const char* name, std::optional<bool>& value, const std::string& what) {
+        r->add_flag_callback(
+            std::string("--") + name, [&value] { value = true; }, what + " (default: the scene's)");
+        r->add_flag_callback(
+            std::string("--no-") + name, [&value] { value = false; },
+            std::string("turn --") + name + " off");
+    };
+    on_off("shadows", render.shadows, "shadows from the key light");
+    on_off("aa", render.antialiasing, "4x multisample anti-aliasing");
+    on_off("overlay", render.overlay,
+           "time, step, integrator, energy and momentum in the top-left corner");
+    on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
+    on_off("vectors", render.vectors,
+           "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
+    r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
+    r->add_option("--compare", render.compare,
+                  "integrators to draw side by side, e.g. euler,symplectic_euler,rk4,splitting")
+        ->delimiter(',');
+}
+
+void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline& tl,
+                   const Simulation& sim, const physics::Diagnostics& d0, const RunResult& r,
+                   const render::FrameSink& sink, double wall) {
+    if (cmd.common.quiet) return;
+    const physics::Diagnostics d1 = physics::diagnose(sim.model, sim.state);
+    std::fprintf(stderr, "tumble: %s: %s\n", scene.source.c_str(), tl.describe().c_str());
+    std::fprintf(stderr,
+                 "tumble: integrator %s, %d bodies, t_end = %.6g s, energy %.9g J -> %.9g J\n",
+                 std::string(physics::integrator_info(sim.model.integrator).name).c_str(),
+                 sim.model.body_count(), sim.state.time(sim.model), d0.energy(), d1.energy());
+    std::fprintf(stderr, "tumble: %lld frames in %.2f s wall (%.1f frames/s)\n",
+                 static_cast<long long>(r.frames), wall, wall > 0 ? r.frames / wall : 0.0);
+    std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
+}
+
+int run_render(const RenderCommand& cmd) {
+    if (!cmd.compare.empty()) return run_compare(cmd);
+    Scene scene = load_for_command(cmd.common);
+    apply_render_overrides(cmd, scene);
+    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    check_frame_index(cmd, tl);
+    Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
+    if (const std::string note = threads_note(sim, cmd.common.threads);
+        !note.empty() && !cmd.common.quiet)
+        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
+    // On an exception the sink's destructor deletes the partial output.
+    const std::unique_ptr<render::FrameSink> sink =
+        open_render_sink(cmd, scene, output_name(cmd, scene));
+    InterruptGuard guard;
+    const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
+    const auto t0 = std::chrono::steady_clock::now();
+    const RunResult r = render_frames(scene, tl, sim, *sink, cmd.frame.value_or(0),
+                                      cmd.frame.value_or(tl.frames - 1), cmd.common.quiet);
+    if (r.frames > 0)
+        sink->finish();
+    else
+        sink->abort(); // interrupted before the first frame: nothing worth keeping
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    print_summary(cmd, scene, tl, sim, d0, r, *sink, wall);
+    if (cmd.stats) std::fprintf(stderr, "%s", describe_stats(r.stats).c_str());
+    if (!r.interrupted) return kOk;
+    std::fprintf(stderr,
+                 "tumble: interrupted by signal %d after %lld frames; %s is complete and plays\n",
+                 InterruptGuard::signal_number(), static_cast<long long>(r.frames),
+                 sink->describe().c_str());
+    return interrupted_exit_code(InterruptGuard::signal_number());
+}
+
+} // namespace
+
+Subcommand add_render_command(CLI::App& app) {
+    auto cmd = std::make_shared<RenderCommand>();
+    CLI::App* r = app.add_subcommand(
+        "render", "simulate a scene and render it to MP4, PNG frames or a still");
+    add_render_options(r, *cmd);
+    add_switches(r, *cmd);
+    return {[r] { return r->parsed(); }, [cmd] { return run_render(*cmd); }};
+}
+
+} // namespace tumble::app

@@ -1,0 +1,77 @@
+#include "app/cli/render_setup.h"
+
+#include "app/scene/scene_error.h"
+#include "io/bad_input.h"
+
+#include <filesystem>
+
+namespace tumble::app {
+
+void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
+    RenderSettings& rs = scene.render;
+    if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing
+        rs.width = 640;
+        rs.height = 360;
+        rs.shadows = false;
+        rs.antialiasing = false;
+    }
+    if (cmd.width) rs.width = *cmd.width;
+    if (cmd.height) rs.height = *cmd.height;
+    if (cmd.fps) rs.fps = *cmd.fps;
+    if (cmd.shadows) rs.shadows = *cmd.shadows;
+    if (cmd.antialiasing) rs.antialiasing = *cmd.antialiasing;
+    if (cmd.overlay) rs.overlay = *cmd.overlay;
+    if (cmd.axes) rs.axes = *cmd.axes;
+    if (cmd.vectors) rs.vectors = *cmd.vectors;
+    if (rs.width < 16 || rs.height < 16)
+        throw SceneError("--width/--height",
+                         std::to_string(rs.width) + "x" + std::to_string(rs.height),
+                         "expected at least 16x16 pixels");
+    if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
+}
+
+void check_frame_index(const RenderCommand& cmd, const Timeline& tl) {
+    if (cmd.frame && (*cmd.frame < 0 || *cmd.frame >= tl.frames))
+        throw SceneError("--frame", std::to_string(*cmd.frame),
+                         "expected a frame index in [0, " + std::to_string(tl.frames - 1) + "]");
+}
+
+std::string output_name(const RenderCommand& cmd, const Scene& scene, const std::string& suffix) {
+    std::string output = cmd.output;
+    if (output.empty()) {
+        const std::string stem = std::filesystem::path(scene.source).stem().string();
+        output = (stem.empty() ? "tumble" : stem) + suffix + ".mp4";
+    }
+    if (cmd.frame && !output.ends_with(".png"))
+        throw io::BadInput("--frame renders one still: the output must end in .png, got " + output);
+    return output;
+}
+
+std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
+                                                    const std::string& output) {
+    const auto parent = std::filesystem::path(output).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && output.find('%') == std::string::npos)
+        std::filesystem::create_directories(parent, ec);
+    if (ec)
+        throw io::BadInput("cannot create the folder '" + parent.string() + "' of '" + output +
+                           "': " + ec.message());
+    render::SinkOptions options;
+    options.width = scene.render.width;
+    options.height = scene.render.height;
+    options.fps = scene.render.fps;
+    options.crf = cmd.crf;
+    options.preset = video_preset(cmd);
+    try {
+        return render::open_sink(output, options);
+    } catch (const render::SinkError& e) {
+        throw io::BadInput(e.what());
+    }
+}
+
+std::string video_preset(const RenderCommand& cmd) {
+    if (cmd.preset) return *cmd.preset;
+    return cmd.preview ? "ultrafast" : "veryfast";
+}
+
+} // namespace tumble::app

@@ -1,0 +1,58 @@
+#pragma once
+// The options of `tumble render` and what the commands that draw (render, render --compare,
+// bench-render) make of them: the scene's picture settings with the command line's overrides,
+// the output's name, and its sink.
+#include "app/cli/scene_options.h"
+#include "app/run/timeline.h"
+#include "app/scene/scene.h"
+#include "render/frame_sink.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tumble::app {
+
+struct RenderCommand {
+    SceneOptions common;
+    std::string output; // empty: "<scene name>.mp4"
+    std::optional<int> width, height, fps;
+    std::optional<std::int64_t> frame; // render only this frame (to a still .png)
+    int crf = 18;
+    // Encoder preset; unset: "veryfast", or "ultrafast" with --preview (video_preset()).
+    std::optional<std::string> preset;
+    // Picture switches; unset ones keep the scene's render settings.
+    bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
+    std::optional<bool> shadows, antialiasing, overlay, axes, vectors;
+    bool stats = false; // print each pipeline stage's rate
+    // Integrators drawn side by side, each stepping its own copy of the scene (compare_command).
+    std::vector<std::string> compare;
+};
+
+// --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
+// --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws SceneError.
+void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
+
+// The encoder preset of a run: --preset if given, else "ultrafast" for --preview (a quick look:
+// measured, veryfast encoding made the 640x360 preview 1.58x slower than drawing alone, ultrafast
+// keeps it near the renderer's pace) and "veryfast" otherwise.
+std::string video_preset(const RenderCommand& cmd);
+
+// Throws SceneError when --frame names a frame outside the video.
+void check_frame_index(const RenderCommand& cmd, const Timeline& tl);
+
+// --output, or "<scene file stem><suffix>.mp4" ("tumble" for a scene without a file). Throws
+// io::BadInput when the output cannot take this run: --frame writes one still, a .png.
+std::string output_name(const RenderCommand& cmd, const Scene& scene,
+                        const std::string& suffix = "");
+
+// The sink for `output` at the scene's size and frame rate with the command's quality settings,
+// creating the output's folder first (not for a name with a %d pattern). An output that cannot be
+// opened (unknown type, odd size for H.264, a folder that cannot be made) is bad input: throws
+// io::BadInput. Errors while writing later are failed runs (render::SinkError).
+std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
+                                                    const std::string& output);
+
+} // namespace tumble::app

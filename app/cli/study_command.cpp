@@ -1,0 +1,146 @@
+// `tumble study [--quick] [-o DIR] [--threads N]`: runs the work-precision grid and the stability
+// map, then writes DIR/study.csv, DIR/study.json, DIR/plots/*.png and DIR/report.md.
+#include "app/cli/failure.h"
+#include "app/cli/subcommand.h"
+#include "app/run/progress.h"
+#include "app/study/analysis.h"
+#include "app/study/metrics.h"
+#include "app/study/plots.h"
+#include "app/study/report.h"
+#include "app/study/runner.h"
+#include "app/study/stability.h"
+#include "io/atomic_file.h"
+#include "io/bad_input.h"
+#include "physics/integrator.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace tumble::app {
+namespace {
+
+using namespace study;
+
+struct StudyCommand {
+    bool quick = false;           // the small grid CI runs (under a minute on 2 cores)
+    std::string output = "study"; // folder for study.csv, study.json, report.md and plots/
+    int threads = 0;              // 0: one per hardware thread
+    bool quiet = false;
+};
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The energy plot: the headline problem at its grid step nearest h|w| = 0.05, for four horizons.
+void energy_traces(Results& r, int threads) {
+    const Problem& p = problems().front();
+    double best = 0.0;
+    for (std::int64_t n : step_counts(p, r.quick)) {
+        const double dt = p.duration / double(n);
+        if (best == 0.0 || std::abs(std::log(dt * largest_spin(p) / 0.05)) <
+                               std::abs(std::log(best * largest_spin(p) / 0.05)))
+            best = dt;
+    }
+    r.energy_problem = p.name;
+    r.energy_dt = best;
+    r.energy_t_end = 4.0 * p.duration;
+    const auto infos = physics::integrators();
+    r.energy.resize(infos.size());
+    parallel_for(static_cast<int>(infos.size()), threads, [&](int i) {
+        r.energy[i] = energy_trace(p, std::string(infos[i].name), best, r.energy_t_end);
+    });
+}
+
+void print_summary(const Results& r, const std::string& dir) {
+    std::printf("recommendation (orientation error, max over [0, T]):\n");
+    for (const Recommendation& rec : r.recommendations) {
+        if (!rec.row) {
+            std::printf("  %-18s %s  not reached on the grid\n", rec.problem.c_str(),
+                        sci(rec.target, 0).c_str());
+            continue;
+        }
+        std::printf("  %-18s %s  %-16s h = %-9.3g error %s  cost %.3g ms\n", rec.problem.c_str(),
+                    sci(rec.target, 0).c_str(), rec.row->integrator.c_str(), rec.row->dt,
+                    sci(headline_error(*rec.row)).c_str(), 1e3 * rec.row->cost_s);
+    }
+    std::printf("wrote %s/report.md, study.csv, study.json and plots/ in %.1f s\n", dir.c_str(),
+                r.seconds_total);
+}
+
+int run_study(const StudyCommand& cmd) {
+    const Clock::time_point start = Clock::now();
+    Results r;
+    r.quick = cmd.quick;
+    r.threads = cmd.threads > 0
+                    ? cmd.threads
+                    : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    r.timing = cmd.quick ? TimingSettings{3, 1e-3} : TimingSettings{5, 2e-3};
+    try {
+        io::ensure_writable_directory(cmd.output);
+    } catch (const io::FileError& e) {
+        throw io::BadInput(e.what()); // before the run: the output folder cannot be used
+    }
+    try {
+        r.plotter = gnuplot_version(); // before the long part: a missing gnuplot fails at once
+        r.machine = describe_machine();
+        r.build = describe_build();
+
+        std::size_t runs = 0;
+        for (const Problem& p : problems())
+            runs += step_counts(p, cmd.quick).size() * physics::integrators().size();
+        if (!cmd.quiet)
+            std::fprintf(stderr,
+                         "tumble study: %zu problems x %zu integrators, %zu runs on %d "
+                         "threads\n",
+                         problems().size(), physics::integrators().size(), runs, r.threads);
+        {
+            Progress progress("runs", static_cast<std::int64_t>(runs), cmd.quiet);
+            const Clock::time_point t0 = Clock::now();
+            r.rows = run_grid(problems(), cmd.quick, r.threads, r.timing,
+                              [&](int done, int) { progress.update(done); });
+            progress.finish();
+            r.seconds_grid = seconds_since(t0);
+        }
+        const Clock::time_point t1 = Clock::now();
+        r.stability = stability_map(cmd.quick, r.threads);
+        r.seconds_stability = seconds_since(t1);
+        energy_traces(r, r.threads);
+
+        r.orders = fit_orders(r.rows);
+        std::vector<std::string> names;
+        for (const Problem& p : problems()) names.push_back(p.name);
+        r.recommendations = recommend(r.rows, names);
+
+        const std::filesystem::path dir(cmd.output);
+        write_plots(dir, r);
+        r.seconds_total = seconds_since(start);
+        write_csv(dir / "study.csv", r);
+        write_json(dir / "study.json", r);
+        write_report(dir / "report.md", r);
+    } catch (const std::exception& e) { // a failed run (exit 1), named as the study's
+        throw std::runtime_error(std::string("study: ") + e.what());
+    }
+    if (!cmd.quiet) print_summary(r, cmd.output);
+    return kOk;
+}
+
+} // namespace
+
+Subcommand add_study_command(CLI::App& app) {
+    auto cmd = std::make_shared<StudyCommand>();
+    CLI::App* st = app.add_subcommand(
+        "study",
+        "work-precision study of every integrator, and the stability map (report + plots)");
+    st->add_flag("--quick", cmd->quick, "small grid, under a minute on 2 cores (what CI runs)");
+    st->add_option("-o,--output", cmd->output, "output folder (default: study)");
+    st->add_option("--threads", cmd->threads, "worker threads (default: one per hardware thread)")
+        ->check(CLI::PositiveNumber);
+    st->add_flag("-q,--quiet", cmd->quiet, "no progress and no summary");
+    return {[st] { return st->parsed(); }, [cmd] { return run_study(*cmd); }};
+}
+
+} // namespace tumble::app

@@ -1,0 +1,42 @@
+#pragma once
+// The frames of a scene, in order: steps the simulation to each frame time t_k = k / fps
+// (app/run/timeline.h) and describes what to draw (the SceneView: bodies, camera, overlay text).
+// Used by `tumble render` (on the pipeline's physics thread) and by stills, so that frame k of a
+// still and frame k of a video are the same picture.
+#include "app/run/simulation.h"
+#include "app/run/timeline.h"
+#include "app/scene/scene.h"
+#include "app/view/vector_arrows.h"
+#include "physics/diagnostics.h"
+#include "render/scene_view.h"
+
+#include <cstdint>
+
+namespace tumble::app {
+
+class FrameSource {
+  public:
+    // Frames first..last (inclusive) of `sim`, which must be at t = 0. Keeps references.
+    FrameSource(const Scene& scene, const Timeline& timeline, Simulation& sim, std::int64_t first,
+                std::int64_t last);
+
+    // Fills `view` with the next frame (reusing its storage) and steps on to the one after.
+    // Returns false when every frame has been produced. Throws physics::DivergenceError.
+    bool next(render::SceneView& view);
+
+    std::int64_t next_frame() const { return k_; }
+    const physics::Diagnostics& initial() const { return initial_; }
+
+  private:
+    void step_one_frame();
+
+    const Scene& scene_;
+    const Timeline& timeline_;
+    Simulation& sim_;
+    std::int64_t k_ = 0, first_, last_;
+    bool done_ = false;
+    physics::Diagnostics initial_;
+    VectorArrows arrows_; // drawn when scene.render.vectors
+};
+
+} // namespace tumble::app

@@ -1,0 +1,33 @@
+#pragma once
+// A scene made ready to step: the physics model, its initial state and the step's workspace.
+#include "app/scene/scene.h"
+#include "physics/model.h"
+#include "physics/state.h"
+#include "physics/step.h"
+
+#include <memory>
+
+namespace tumble::app {
+
+struct Simulation {
+    physics::Model model;
+    physics::State state;
+    // The contact stage's buffers and worker threads (physics/step.h). States do not depend on
+    // the thread count: the same scene gives the same bits with 1 or N threads.
+    std::unique_ptr<physics::StepWorkspace> workspace;
+    std::string source; // the scene's file, named in the message of a divergence
+
+    // One physics step. Throws physics::DivergenceError, its message starting with `source`.
+    void step();
+};
+
+// Builds the model with time step `dt` (the scene's, or one adjusted to hit frame times) and a
+// workspace of `threads` threads (only a scene with contacts uses more than one). Throws
+// SceneError as build_checked_model() (app/scene/scene_check.h) does.
+Simulation make_simulation(const Scene& scene, double dt, int threads = 1);
+
+// Why a run asked for `threads` > 1 physics threads steps on one: the scene has no contact stage,
+// or fewer dynamic bodies than world.parallel_min_bodies. Empty if the threads are used.
+std::string threads_note(const Simulation& sim, int threads);
+
+} // namespace tumble::app

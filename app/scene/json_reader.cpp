@@ -1,0 +1,192 @@
+#include "app/scene/json_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tumble::app {
+namespace {
+
+const char* type_name(const nlohmann::json& v) {
+    return v.type_name();
+}
+
+std::string escape_segment(const std::string& key) {
+    // RFC 6901: '~' -> "~0", '/' -> "~1".
+    std::string out;
+    for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    return out;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+} // namespace
+
+JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string path)
+    : value_(value), file_(std::move(file)), path_(path.empty() ? "/" : std::move(path)) {}
+
+void JsonReader::fail(const std::string& what) const {
+    throw SceneError(file_, path_, what);
+}
+
+JsonReader JsonReader::child(const nlohmann::json& v, const std::string& segment) const {
+    return JsonReader(v, file_, (path_ == "/" ? "" : path_) + "/" + segment);
+}
+
+void JsonReader::expect_object() const {
+    if (!value_.is_object()) fail(std::string("expected an object, got ") + type_name(value_));
+}
+
+bool JsonReader::has(const char* key) const {
+    expect_object();
+    return value_.contains(key);
+}
+
+JsonReader JsonReader::field(const char* key) {
+    expect_object();
+    auto it = value_.find(key);
+    if (it == value_.end()) fail(std::string("missing required field \"") + key + "\"");
+    read_.insert(key);
+    return child(*it, escape_segment(key));
+}
+
+std::optional<JsonReader> JsonReader::optional(const char* key) {
+    expect_object();
+    read_.insert(key);
+    auto it = value_.find(key);
+    if (it == value_.end()) return std::nullopt;
+    return child(*it, escape_segment(key));
+}
+
+void JsonReader::finish() const {
+    expect_object();
+    std::vector<std::string> known(read_.begin(), read_.end());
+    for (auto it = value_.begin(); it != value_.end(); ++it) {
+        if (read_.count(it.key())) continue;
+        std::string what = "unknown field \"" + it.key() + "\"";
+        const std::string guess = closest_match(it.key(), known);
+        if (!guess.empty()) what += " (did you mean \"" + guess + "\"?)";
+        std::string fields;
+        for (const std::string& k : known) fields += (fields.empty() ? "" : ", ") + k;
+        what += "; fields allowed here: " + fields;
+        throw SceneError(file_, (path_ == "/" ? "" : path_) + "/" + escape_segment(it.key()), what);
+    }
+}
+
+std::size_t JsonReader::size() const {
+    if (!value_.is_array()) fail(std::string("expected an array, got ") + type_name(value_));
+    return value_.size();
+}
+
+JsonReader JsonReader::at(std::size_t index) const {
+    return child(value_.at(index), std::to_string(index));
+}
+
+double JsonReader::number(const char* what) const {
+    if (!value_.is_number())
+        fail(std::string("expected ") + what + ", got " + type_name(value_) + " " + value_.dump());
+    const double x = value_.get<double>();
+    if (!std::isfinite(x)) fail(std::string("expected ") + what + ", got a non-finite number");
+    return x;
+}
+
+double JsonReader::positive(const char* what) const {
+    const double x = number(what);
+    if (!(x > 0.0)) fail(std::string("expected ") + what + ", got " + value_.dump());
+    return x;
+}
+
+double JsonReader::non_negative(const char* what) const {
+    const double x = number(what);
+    if (x < 0.0) fail(std::string("expected ") + what + ", got " + value_.dump());
+    return x;
+}
+
+int JsonReader::integer(int min, int max, const char* what) const {
+    if (!value_.is_number_integer())
+        fail(std::string("expected ") + what + " (an integer), got " + value_.dump());
+    const long long x = value_.get<long long>();
+    if (x < min || x > max)
+        fail(std::string("expected ") + what + " in [" + std::to_string(min) + ", " +
+             std::to_string(max) + "], got " + std::to_string(x));
+    return static_cast<int>(x);
+}
+
+bool JsonReader::boolean() const {
+    if (!value_.is_boolean()) fail(std::string("expected true or false, got ") + value_.dump());
+    return value_.get<bool>();
+}
+
+std::string JsonReader::string() const {
+    if (!value_.is_string()) fail(std::string("expected a string, got ") + value_.dump());
+    return value_.get<std::string>();
+}
+
+std::array<double, 3> JsonReader::vec3(const char* what) const {
+    if (!value_.is_array() || value_.size() != 3)
+        fail(std::string("expected ") + what + " as an array of 3 numbers, got " + value_.dump());
+    std::array<double, 3> out{};
+    for (std::size_t k = 0; k < 3; ++k) out[k] = at(k).number("a finite number");
+    return out;
+}
+
+namespace {
+
+// "line:column" (1-based) of byte offset `at` in `text`.
+std::string line_column(const std::string& text, std::size_t at) {
+    at = std::min(at, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t k = 0; k < at; ++k) {
+        if (text[k] == '\n')
+            ++line, column = 1;
+        else
+            ++column;
+    }
+    return std::to_string(line) + ":" + std::to_string(column);
+}
+
+} // namespace
+
+nlohmann::json parse_json(const std::string& text, const std::string& file) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        std::string what = e.what();
+        const auto at = what.find("syntax error");
+        what = at == std::string::npos ? what : what.substr(at);
+        throw SceneError(file, line_column(text, e.byte == 0 ? 0 : e.byte - 1),
+                         "invalid JSON: " + what);
+    } catch (const nlohmann::json::out_of_range& e) {
+        // A number too large for a double ("number overflow parsing '1e999'"); the exception has
+        // no position, so locate the quoted token in the text.
+        const std::string what = e.what();
+        const auto open = what.find('\''), close = what.rfind('\'');
+        const std::string token = open < close ? what.substr(open + 1, close - open - 1) : "";
+        const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+        throw SceneError(file, at == std::string::npos ? "number" : line_column(text, at),
+                         "expected a finite number, got " + token +
+                             " (out of range for a double: non-finite)");
+    }
+}
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    std::size_t best_d = std::numeric_limits<std::size_t>::max();
+    for (const std::string& c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_d) best_d = d, best = c;
+    }
+    return best_d <= std::max<std::size_t>(2, word.size() / 3) ? best : std::string();
+}
+
+} // namespace tumble::app

@@ -1,0 +1,64 @@
+#pragma once
+// A scene as loaded from a file: the physics description (world + bodies), and how to draw it.
+// The format is documented field by field in docs/scene-format.md.
+#include "app/scene/camera_rig.h"
+#include "physics/build.h"
+#include "render/scene_view.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tumble::app {
+
+struct BodyLook {
+    std::string name;                         // from the scene, or "body <i>"
+    glm::vec3 color{0.8f, 0.8f, 0.8f};        // sRGB
+    float plane_extent = 20.0f;               // drawn side length of a plane, m
+    std::uint32_t mesh_id = 0;                // mesh bodies: index into Scene::meshes
+    std::optional<render::Material> material; // the scene's; else app/scene/materials.h's default
+};
+
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    int fps = 60;
+    CameraRig camera; // fixed, orbiting, following a body or on a path (app/scene/camera_rig.h)
+    render::Light light;
+    glm::vec3 background{0.62f, 0.72f, 0.85f};
+    bool shadows = true;      // shadow map from the key light
+    bool antialiasing = true; // 4x multisampling
+    bool overlay = false;     // time, step, integrator, energy, momentum in the top-left corner
+    bool axes = false;        // every body's own x, y, z axes as red, green, blue rods
+    bool vectors = false;     // w and L arrows at each dynamic body (app/view/vector_arrows.h)
+};
+
+struct Scene {
+    std::string source; // file path, or "builtin:<name>" for an embedded scene
+    std::string title;
+    physics::WorldDef world;
+    double duration = 10.0; // s of simulated (and rendered) time
+    std::vector<physics::BodyDef> bodies;
+    std::vector<BodyLook> looks; // one per body
+    // The drawn triangles of the scene's mesh files, shared by every body using one (BodyLook::
+    // mesh_id) and by every frame's SceneView (render uploads each once).
+    std::vector<std::shared_ptr<const render::MeshData>> meshes;
+    // Things worth telling the user that do not stop the run (e.g. bodies starting deeply
+    // interpenetrated); commands print them to stderr as "tumble: warning: ...".
+    std::vector<std::string> warnings;
+    RenderSettings render;
+};
+
+// Loads a scene from JSON text; `source` names it in error messages. Throws SceneError.
+Scene load_scene(const std::string& text, const std::string& source);
+
+// Resolves a scene argument: an existing file path, or the name of a built-in scene ("default",
+// "default.json"). An empty argument means the built-in default scene. Throws SceneError.
+Scene load_scene_argument(const std::string& argument);
+
+// Names of the built-in scenes (without .json).
+std::vector<std::string> builtin_scene_names();
+
+} // namespace tumble::app

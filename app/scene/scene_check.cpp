@@ -1,0 +1,72 @@
+#include "app/scene/scene_check.h"
+
+#include "app/scene/scene_error.h"
+#include "physics/build.h"
+#include "physics/overlaps.h"
+
+#include <cstdio>
+#include <regex>
+
+namespace tumble::app {
+namespace {
+
+// Where a physics field lives in the scene format, below /bodies/i or /world.
+std::string json_field(const std::string& field) {
+    if (field == "radius" || field == "size" || field == "length" || field == "file")
+        return "shape/" + field;
+    if (field == "friction" || field == "restitution") return "material/" + field;
+    return field;
+}
+
+std::string body_label(const Scene& scene, int i) {
+    return "body " + std::to_string(i) + " \"" + scene.looks[std::size_t(i)].name + "\"";
+}
+
+// "body 3" -> "body 3 "left wall"" in physics' messages, so the user sees the names they wrote.
+std::string with_body_names(const Scene& scene, const std::string& what) {
+    static const std::regex body(R"(\bbody (\d+)\b)");
+    std::string out;
+    auto last = what.cbegin();
+    for (std::sregex_iterator it(what.begin(), what.end(), body), end; it != end; ++it) {
+        const int i = std::stoi((*it)[1].str());
+        out.append(last, (*it)[0].first);
+        out += i >= 0 && i < int(scene.looks.size()) ? body_label(scene, i) : (*it)[0].str();
+        last = (*it)[0].second;
+    }
+    out.append(last, what.cend());
+    return out;
+}
+
+} // namespace
+
+physics::Model build_checked_model(const Scene& scene, double dt) {
+    physics::WorldDef world = scene.world;
+    world.dt = dt;
+    try {
+        return physics::build_model(world, scene.bodies);
+    } catch (const physics::ModelError& e) {
+        const std::string field = json_field(e.field);
+        const std::string place =
+            e.body < 0 ? "/world/" + field : "/bodies/" + std::to_string(e.body) + "/" + field;
+        throw SceneError(scene.source, place, with_body_names(scene, e.what()));
+    }
+}
+
+std::vector<std::string> initial_state_warnings(const Scene& scene, const physics::Model& model,
+                                                const physics::State& state) {
+    std::vector<std::string> out;
+    if (!model.passes.contacts) return out;
+    for (const physics::Overlap& o : physics::deep_initial_overlaps(model, state)) {
+        char numbers[96];
+        std::snprintf(numbers, sizeof numbers,
+                      " by %.1f mm; contacts will push them apart at up "
+                      "to %.3g m/s",
+                      o.depth * 1000.0, model.contact.max_push_speed);
+        out.push_back(scene.source + ": /bodies/" + std::to_string(o.b) +
+                      "/position: " + body_label(scene, o.b) + " starts interpenetrating " +
+                      body_label(scene, o.a) + numbers + " (move them apart if not intended)");
+    }
+    return out;
+}
+
+} // namespace tumble::app

@@ -1,0 +1,84 @@
+#include "app/scene/shape_loader.h"
+
+#include "app/scene/scene_values.h"
+
+namespace tumble::app {
+namespace {
+
+using physics::Shape;
+using physics::Vec3;
+
+Shape read_box(JsonReader& r) {
+    const JsonReader size = r.field("size");
+    const Vec3 full = read_vec3(size, "box edge lengths [x, y, z] in metres");
+    if (full.minCoeff() <= 0.0)
+        size.fail("expected positive box edge lengths, got " + size.value().dump());
+    return Shape::box(0.5 * full);
+}
+
+// {"type": "capsule", "radius": r, "length": L}: L is the length of the straight part, the
+// distance between the centres of the two end hemispheres (the whole capsule is L + 2 r long),
+// along the body's z axis.
+Shape read_capsule(JsonReader& r) {
+    const double radius = r.field("radius").positive("a positive capsule radius in metres");
+    const double length = r.field("length").positive(
+        "a positive length in metres of the capsule's straight part, between the centres of its "
+        "end caps (a capsule of length 0 is a sphere: use \"sphere\")");
+    return Shape::capsule(radius, 0.5 * length);
+}
+
+const std::pair<ObjMesh, std::uint32_t>& load_mesh(JsonReader file, double scale, ShapeContext& c) {
+    const std::string name = file.string();
+    const auto key = std::make_pair(name, scale);
+    if (auto it = c.loaded.find(key); it != c.loaded.end()) return it->second;
+    ObjMesh mesh;
+    const auto text = find_obj_text(name, c.scene_source, mesh.origin);
+    if (!text)
+        file.fail("no mesh file \"" + name +
+                  "\" next to the scene file nor among the bundled meshes (assets/meshes/)");
+    auto solid = std::make_shared<physics::TriangleMesh>();
+    if (auto why = parse_obj(*text, scale, *solid)) file.fail(mesh.origin + ": " + *why);
+    if (auto why = physics::check_closed_mesh(*solid))
+        file.fail(mesh.origin + ": expected a closed, outward-wound triangle mesh: " + *why);
+    mesh.drawn = drawn_mesh(*solid);
+    mesh.solid = std::move(solid);
+    const auto id = static_cast<std::uint32_t>(c.drawn->size());
+    c.drawn->push_back(mesh.drawn);
+    return c.loaded.emplace(key, std::make_pair(std::move(mesh), id)).first->second;
+}
+
+} // namespace
+
+void read_shape(JsonReader r, ShapeContext& c, physics::BodyDef& b, BodyLook& look) {
+    const std::string type = r.field("type").string();
+    if (type == "sphere") {
+        b.shape = Shape::sphere(r.field("radius").positive("a positive radius in metres"));
+    } else if (type == "box") {
+        b.shape = read_box(r);
+    } else if (type == "plane") {
+        b.shape = Shape::plane();
+        if (auto e = r.optional("extent"))
+            look.plane_extent = static_cast<float>(e->positive("a positive drawn size in metres"));
+    } else if (type == "capsule") {
+        b.shape = read_capsule(r);
+    } else if (type == "mesh") {
+        const double scale =
+            r.has("scale") ? r.field("scale").positive("a positive scale factor") : 1.0;
+        const auto& [mesh, id] = load_mesh(r.field("file"), scale, c);
+        b.shape = Shape::mesh();
+        b.mesh = mesh.solid;
+        look.mesh_id = id;
+    } else {
+        r.field("type").fail("unknown shape \"" + type +
+                             "\"; expected one of: sphere, box, plane, capsule, mesh");
+    }
+    r.finish();
+}
+
+double body_volume(const physics::BodyDef& b) {
+    if (b.shape.kind == physics::ShapeKind::Mesh && b.mesh)
+        return physics::mesh_mass_properties(*b.mesh).volume;
+    return physics::shape_volume(b.shape);
+}
+
+} // namespace tumble::app

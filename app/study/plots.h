@@ -1,0 +1,38 @@
+#pragma once
+// The study's PNG plots, drawn by gnuplot (Debian's gnuplot-nox, pngcairo terminal) run as a
+// subprocess on a generated script with the data inline. Each plot keeps its script beside the
+// PNG (plots/<name>.gp), so a user can restyle and redraw it with `gnuplot <name>.gp`.
+#include "app/study/report.h"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tumble::app::study {
+
+struct PlotError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// gnuplot's version line ("gnuplot 5.4 patchlevel 4"). Throws PlotError when gnuplot cannot be
+// run, naming the package to install.
+std::string gnuplot_version();
+
+// PNG paths relative to the output folder, as the report links them.
+std::string work_precision_plot(const std::string& problem);
+std::string error_vs_dt_plot(const std::string& problem);
+inline const char* energy_plot() {
+    return "plots/energy.png";
+}
+inline const char* stability_plot() {
+    return "plots/stability.png";
+}
+
+// Draws every plot into dir/plots/. Throws PlotError when gnuplot fails (its message included).
+void write_plots(const std::filesystem::path& dir, const Results& r);
+
+// Errors below this are drawn at it (log axes cannot show 0).
+inline constexpr double kPlotFloor = 1e-16;
+
+} // namespace tumble::app::study

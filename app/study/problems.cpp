@@ -1,0 +1,224 @@
+// The reference problems of `tumble study`, one table entry each. A problem is a world, its bodies,
+// a horizon T, where its reference motion comes from and the step grids of the full and the quick
+// study. Bodies with no closed-form motion (torques on a tumbling body) use a converged run of the
+// registry's highest-order integrator at a much smaller step as their reference; the contact
+// problems (a bouncing ball, a resting stack) have closed forms of their own.
+#include "app/study/study.h"
+#include "physics/exact/reference_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::app::study {
+namespace {
+
+using physics::BodyDef;
+using physics::Mat3;
+using physics::Quat;
+using physics::Shape;
+using physics::Vec3;
+using physics::WorldDef;
+
+WorldDef no_gravity() {
+    WorldDef w;
+    w.gravity = Vec3::Zero();
+    return w;
+}
+
+// The default scene's book (box 0.22 x 0.05 x 0.30 m, 0.8 kg): moments (6.17e-3, 9.23e-3,
+// 3.39e-3) kg m^2, so y is the largest axis, x the middle one and z the smallest.
+BodyDef book(const Vec3& w) {
+    BodyDef b;
+    b.shape = Shape::box(Vec3(0.11, 0.025, 0.15));
+    b.mass = 0.8;
+    b.angular_velocity = w;
+    return b;
+}
+
+// A body with the given principal moments (kg m^2) along its body axes; the shape only matters for
+// drawing, which the study never does.
+BodyDef with_moments(const Vec3& moments, const Quat& orientation, const Vec3& w_body) {
+    BodyDef b;
+    b.shape = Shape::box(Vec3(0.1, 0.1, 0.1));
+    b.mass = 1.0;
+    b.inertia = moments.asDiagonal();
+    b.orientation = orientation;
+    b.angular_velocity = orientation * w_body;
+    return b;
+}
+
+Quat tilted(double angle, const Vec3& axis) {
+    return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
+}
+
+// Contact problems. A ball (r = 0.1 m, 1 kg) dropped from rest with its bottom h0 = 1 m above a
+// plane, restitution e = 0.8. Exact motion: free fall between bounces, and at an impact with speed
+// V the ball leaves at e V (Newton), so the apexes are e^(2k) h0. In T = 2 s it lands at 0.452,
+// 1.174 and 1.752 s, at 4.43, 3.54 and 2.83 m/s, far above the 0.5 m/s restitution threshold;
+// no spin, no sliding (a vertical impact has no tangential velocity).
+constexpr double kBallRadius = 0.1, kDrop = 1.0, kBounce = 0.8, kG = 9.81;
+
+BodyDef ground() {
+    BodyDef g;
+    g.shape = Shape::plane();
+    g.motion = physics::Motion::Static;
+    return g;
+}
+
+std::vector<BodyDef> bouncing_ball() {
+    BodyDef ball;
+    ball.shape = Shape::sphere(kBallRadius);
+    ball.mass = 1.0;
+    ball.position = Vec3(0.0, 0.0, kBallRadius + kDrop);
+    ball.material.restitution = kBounce;
+    return {ground(), ball};
+}
+
+// Walks the flights: from height z0 with upward speed u the ball lands after
+// tau = (u + V) / g with V = sqrt(u^2 + 2 g (z0 - r)), and leaves again at e V.
+void bouncing_ball_motion(double t, const physics::Model& m, physics::State& s) {
+    double t0 = 0.0, z0 = kBallRadius + kDrop, u = 0.0;
+    for (;;) {
+        const double impact_speed = std::sqrt(u * u + 2.0 * kG * (z0 - kBallRadius));
+        const double tau = (u + impact_speed) / kG;
+        if (t0 + tau > t) break;
+        t0 += tau, z0 = kBallRadius, u = kBounce * impact_speed;
+    }
+    const double dt = t - t0;
+    const int ball = m.dynamic_bodies.front();
+    s.x[ball] = Vec3(0.0, 0.0, z0 + u * dt - 0.5 * kG * dt * dt);
+    s.v[ball] = Vec3(0.0, 0.0, u - kG * dt);
+}
+
+// Three 0.4 m cubes of 1 kg stacked on a plane, exactly touching, sleeping off: the exact motion
+// is none, so every error is drift (the soft contacts' sag, creep, jitter).
+physics::WorldDef stack_world() {
+    WorldDef w;
+    w.contact.sleeping = false;
+    return w;
+}
+
+std::vector<BodyDef> box_stack() {
+    std::vector<BodyDef> bodies{ground()};
+    for (int i = 0; i < 3; ++i) {
+        BodyDef b;
+        b.shape = Shape::box(Vec3(0.2, 0.2, 0.2));
+        b.mass = 1.0;
+        b.position = Vec3(0.0, 0.0, 0.2 + 0.4 * i);
+        bodies.push_back(b);
+    }
+    return bodies;
+}
+
+std::vector<Problem> make_problems() {
+    std::vector<Problem> p;
+    const exact::ReferenceScene flip = exact::intermediate_axis_scene();
+    p.push_back({"intermediate-axis",
+                 "the book spun at 6 rad/s about its middle axis (0.05 rad/s wobble): it turns "
+                 "over (Dzhanibekov flip) at t = 2.07 s",
+                 [flip] { return flip.world; }, [flip] { return flip.bodies; }, flip.duration,
+                 ReferenceKind::Exact, 16, StepRange{0.05, 1e-5, 5}, StepRange{0.05, 2.5e-4, 2}});
+    p.push_back({"largest-axis",
+                 "the book spun at 8 rad/s about its largest axis with a small wobble: stable",
+                 [] { return no_gravity(); }, [] { return std::vector{book(Vec3(0.2, 8.0, 0.3))}; },
+                 2.5, ReferenceKind::Exact, 16, StepRange{0.05, 1e-5, 5},
+                 StepRange{0.05, 2.5e-4, 2}});
+    p.push_back(
+        {"axisymmetric",
+         "symmetric top, moments (0.02, 0.02, 0.01) kg m^2, |w| = 6.1 rad/s: regular precession",
+         [] { return no_gravity(); },
+         [] {
+             return std::vector{with_moments(Vec3(0.02, 0.02, 0.01), tilted(0.5, Vec3(1, -1, 2)),
+                                             Vec3(1.0, 0.5, 6.0))};
+         },
+         2.5, ReferenceKind::Exact, 16, StepRange{0.05, 1e-5, 5}, StepRange{0.05, 2.5e-4, 2}});
+    p.push_back(
+        {"fast-spin",
+         "the book at |w| = 1000 rad/s, mostly about its largest axis, for 0.05 s (8 turns)",
+         [] { return no_gravity(); },
+         [] { return std::vector{book(1000.0 * Vec3(0.03, 1.0, 0.02).normalized())}; }, 0.05,
+         ReferenceKind::Exact, 16, StepRange{1e-3, 2e-7, 5}, StepRange{1e-3, 1e-5, 2}});
+    p.push_back(
+        {"thin-rod",
+         "rod with moments 1 : 1000 : 1000 (1e-4, 0.1, 0.1 kg m^2) spun at 20 rad/s about its "
+         "axis while turning end over end at 1.1 rad/s",
+         [] { return no_gravity(); },
+         [] {
+             return std::vector{with_moments(Vec3(1e-4, 0.1, 0.1), tilted(0.3, Vec3(1, 1, 0)),
+                                             Vec3(20.0, 1.0, 0.5))};
+         },
+         2.0, ReferenceKind::Exact, 16, StepRange{0.02, 1e-5, 5}, StepRange{0.02, 2e-4, 2}});
+    const exact::ReferenceScene thrown = exact::gravity_spin_scene();
+    p.push_back({"projectile-spin",
+                 "under gravity: the book thrown up turning about its largest axis, and a ball "
+                 "spun up by a torque parallel to its spin",
+                 [thrown] { return thrown.world; }, [thrown] { return thrown.bodies; },
+                 thrown.duration, ReferenceKind::Exact, 16, StepRange{0.02, 1e-5, 5},
+                 StepRange{0.02, 2e-4, 2}});
+    p.push_back({"torqued-book",
+                 "the tumbling book under gravity and a constant torque across its spin: no "
+                 "closed form, reference = converged run at 1/16 of the finest step",
+                 [] { return WorldDef{}; },
+                 [] {
+                     BodyDef b = book(Vec3(3.0, 1.0, -2.0));
+                     b.applied_torque = Vec3(0.0, 0.02, 0.01);
+                     b.velocity = Vec3(0.5, 0.0, 3.0);
+                     return std::vector{b};
+                 },
+                 1.5, ReferenceKind::ConvergedRun, 16, StepRange{0.03, 1e-5, 5},
+                 StepRange{0.03, 3e-4, 2}});
+    Problem ball{"bouncing-ball",
+                 "contacts: a ball dropped 1 m on a plane with restitution 0.8, three bounces "
+                 "(closed form: free fall, impacts leaving at e V)",
+                 [] { return WorldDef{}; },
+                 bouncing_ball,
+                 2.0,
+                 ReferenceKind::Analytic,
+                 16,
+                 StepRange{0.02, 2e-5, 5},
+                 StepRange{0.02, 2e-4, 2}};
+    ball.analytic = bouncing_ball_motion;
+    ball.contacts = true;
+    p.push_back(ball);
+    Problem stack{"box-stack",
+                  "contacts: three 0.4 m cubes resting in a stack on a plane, sleeping off "
+                  "(exact motion: none; the error is drift)",
+                  stack_world,
+                  box_stack,
+                  2.0,
+                  ReferenceKind::Analytic,
+                  16,
+                  StepRange{0.02, 1e-4, 4},
+                  StepRange{0.02, 1e-3, 2}};
+    stack.analytic = [](double, const physics::Model&, physics::State&) {};
+    stack.contacts = true;
+    p.push_back(stack);
+    return p;
+}
+
+} // namespace
+
+const std::vector<Problem>& problems() {
+    static const std::vector<Problem> table = make_problems();
+    return table;
+}
+
+std::vector<std::int64_t> step_counts(const Problem& p, bool quick) {
+    const StepRange& r = quick ? p.quick : p.full;
+    // n = kSamples * m: every sample time t_j = j T / kSamples falls on a step.
+    const auto multiple = [&](double h) {
+        return std::max<std::int64_t>(1, std::llround(p.duration / (kSamples * h)));
+    };
+    const std::int64_t m_lo = multiple(r.h_max), m_hi = multiple(r.h_min);
+    std::vector<std::int64_t> n;
+    for (int i = 0;; ++i) {
+        const std::int64_t m =
+            std::llround(static_cast<double>(m_lo) * std::pow(10.0, double(i) / r.per_decade));
+        if (m >= m_hi) break;
+        if (n.empty() || kSamples * m != n.back()) n.push_back(kSamples * m);
+    }
+    n.push_back(kSamples * m_hi);
+    return n;
+}
+
+} // namespace tumble::app::study

@@ -1,0 +1,47 @@
+#pragma once
+// The study's outputs: study.csv and study.json (every row), report.md (the Markdown report, ending
+// with the recommendation table) and, through study_plots.h, the PNG plots it links to.
+#include "app/study/analysis.h"
+#include "app/study/runner.h"
+#include "app/study/stability.h"
+#include "app/study/study.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tumble::app::study {
+
+struct Results {
+    bool quick = false;
+    int threads = 1;
+    TimingSettings timing;
+    std::vector<Row> rows;
+    std::vector<OrderFit> orders;
+    std::vector<Recommendation> recommendations;
+    std::vector<StabilityResult> stability;
+    std::string energy_problem; // the problem and step of the energy-against-time plot
+    double energy_dt = 0.0, energy_t_end = 0.0;
+    std::vector<EnergyTrace> energy;
+    double seconds_grid = 0.0, seconds_stability = 0.0, seconds_total = 0.0;
+    std::string machine; // CPU model and core count (/proc/cpuinfo)
+    std::string build;   // compiler, build type, flags
+    std::string plotter; // gnuplot's version line
+};
+
+// Machine and build descriptions for the report.
+std::string describe_machine();
+std::string describe_build();
+
+// Each writes its file atomically (temporary name, then rename). Throws io::FileError.
+void write_csv(const std::filesystem::path& file, const Results& r);
+void write_json(const std::filesystem::path& file, const Results& r);
+void write_report(const std::filesystem::path& file, const Results& r);
+
+// Writes `text` to `file` under a temporary name, then renames it into place.
+void write_text_atomic(const std::filesystem::path& file, const std::string& text);
+
+// "1.23e-04", or "-" for NaN: the report's number format.
+std::string sci(double v, int digits = 2);
+
+} // namespace tumble::app::study

@@ -1,0 +1,36 @@
+#include "app/view/overlay_text.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace tumble::app {
+namespace {
+
+template <class... Args>
+void set_line(std::string& line, const char* format, Args... args) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, format, args...);
+    line.assign(buffer);
+}
+
+} // namespace
+
+void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
+    lines.resize(5);
+    const double e0 = o.initial.energy(), e = o.now.energy();
+    // Relative drift when the energy is not near zero, absolute otherwise.
+    const bool relative = std::abs(e0) > 1e-12;
+    const double drift = relative ? (e - e0) / std::abs(e0) : e - e0;
+    set_line(lines[0], "t %.4f s   step %lld", o.t, static_cast<long long>(o.step));
+    set_line(lines[1], "%s   h %.4g ms", std::string(o.integrator).c_str(), o.h * 1e3);
+    if (relative)
+        set_line(lines[2], "E %+.9e J   dE/|E0| %+.1e", e, drift);
+    else
+        set_line(lines[2], "E %+.9e J   dE %+.1e J", e, drift);
+    const physics::Vec3& p = o.now.linear_momentum;
+    const physics::Vec3& l = o.now.angular_momentum;
+    set_line(lines[3], "p %+.3e %+.3e %+.3e kg m/s", p.x(), p.y(), p.z());
+    set_line(lines[4], "L %+.3e %+.3e %+.3e kg m^2/s", l.x(), l.y(), l.z());
+}
+
+} // namespace tumble::app

@@ -1,0 +1,54 @@
+#pragma once
+// Crash-safe file output. A file is written under a temporary name in the same directory as its
+// final name and renamed over it only once complete: rename(2) within one file system is atomic,
+// so a reader (or a user after Ctrl-C or a crash) sees either the old file, the complete new one,
+// or nothing, never a half-written file. Temporary names start with '.' so they stay out of
+// directory listings and globs like frames/*.png, and carry the process id so two processes
+// writing the same output do not trample each other's temporary file.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace tumble::io {
+
+struct FileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// "dir/name.ext" -> "dir/.name.ext.<pid>.partial"
+std::filesystem::path temporary_path_for(const std::filesystem::path& final_path);
+
+// Makes sure `dir` is a directory this process can create files in, creating it if missing (one
+// level only: its parent must exist). Throws FileError naming the directory otherwise. An empty
+// path means the current directory. Returns true when it created the directory.
+bool ensure_writable_directory(const std::filesystem::path& dir);
+
+// Owns one temporary file until commit() renames it to the final name. If neither commit() nor
+// discard() ran, the destructor deletes the temporary file, so an exception between creating and
+// finishing a file cleans up after itself.
+class AtomicFile {
+  public:
+    explicit AtomicFile(std::filesystem::path final_path);
+    ~AtomicFile() { discard(); }
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    // Where to write the contents (the caller opens, writes and closes it).
+    const std::filesystem::path& temp_path() const { return temp_; }
+    const std::filesystem::path& final_path() const { return final_; }
+
+    // Renames the temporary file to the final name, replacing any file already there. Throws
+    // FileError (and deletes the temporary file) when the rename fails.
+    void commit();
+    // Deletes the temporary file if it still exists. Never throws.
+    void discard() noexcept;
+    bool committed() const { return committed_; }
+
+  private:
+    std::filesystem::path final_;
+    std::filesystem::path temp_;
+    bool committed_ = false;
+    bool done_ = false; // committed or discarded: nothing left to clean up
+};
+
+} // namespace tumble::io
