@@ -49,7 +49,10 @@ std::string output_name(const RenderCommand& cmd, const Scene& scene, const std:
 
 std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
                                                     const std::string& output) {
-    const auto parent = std::filesystem::path(output).parent_path();
+    // The folders above the output. A PNG sequence's own folder ("frames/") is left to the sink,
+    // which creates it and removes it again if the run fails before a frame is kept.
+    auto parent = std::filesystem::path(output).parent_path();
+    if (output.ends_with('/')) parent = parent.parent_path();
     std::error_code ec;
     if (!parent.empty() && output.find('%') == std::string::npos)
         std::filesystem::create_directories(parent, ec);

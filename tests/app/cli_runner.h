@@ -38,10 +38,11 @@ inline void write_text(const std::filesystem::path& p, const std::string& text) 
     std::ofstream(p, std::ios::binary) << text;
 }
 
-// Runs `tumble <args>` with the working directory `dir`.
-inline CliResult run_tumble(const std::filesystem::path& dir, const std::string& args) {
-    const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(TUMBLE_EXE) + "' " +
-                            args + " > stdout.txt 2> stderr.txt";
+// Runs the shell command `line` (which names tumble as "$TUMBLE") with the working directory
+// `dir`.
+inline CliResult run_shell(const std::filesystem::path& dir, const std::string& line) {
+    const std::string cmd = "cd '" + dir.string() + "' && TUMBLE='" + std::string(TUMBLE_EXE) +
+                            "' && (" + line + ") > stdout.txt 2> stderr.txt";
     const int status = std::system(cmd.c_str());
     CliResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -50,6 +51,11 @@ inline CliResult run_tumble(const std::filesystem::path& dir, const std::string&
     std::filesystem::remove(dir / "stdout.txt");
     std::filesystem::remove(dir / "stderr.txt");
     return r;
+}
+
+// Runs `tumble <args>` with the working directory `dir`.
+inline CliResult run_tumble(const std::filesystem::path& dir, const std::string& args) {
+    return run_shell(dir, "\"$TUMBLE\" " + args);
 }
 
 // Every file in `dir` (recursively), as paths relative to it.

@@ -1,0 +1,150 @@
+// One mapping of failures to exit codes for every subcommand (app/cli/failure.h, README "Exit
+// codes"): bad input 2, a failed run 1, interrupted 128 + signal. Each class is provoked through
+// each subcommand that can meet it, and each run must leave no output behind.
+//
+// A full disk is provoked with a file-size limit (ulimit -f, SIGXFSZ ignored): writes past it
+// fail with EFBIG exactly as they do with ENOSPC. Not covered: `study` failing mid-run (its grid
+// takes a minute before the first write) and `explain` and `scenes`, which run nothing that can
+// fail but their input.
+#include "app/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <thread>
+#include <unistd.h>
+
+namespace tumble::test {
+namespace {
+
+// A book spun at 8 rad/s: explicit Euler at dt = 0.2 s overflows its angular velocity (step 43).
+const char* kDiverging = R"({
+  "format_version": 1,
+  "world": {"duration": 20, "dt": 0.2, "gravity": [0, 0, 0], "integrator": "euler"},
+  "render": {"fps": 5},
+  "bodies": [{"name": "book", "shape": {"type": "box", "size": [0.3, 0.2, 0.04]},
+              "angular_velocity": [0.02, 8, 0.02]}]
+})";
+
+struct Case {
+    const char* args;
+    int exit_code;
+    const char* message; // a part of stderr that says what went wrong
+};
+
+// Runs each case in a fresh folder holding s.json (the diverging scene); checks the exit code,
+// the message, and that nothing but s.json is left.
+void check_cases(const std::vector<Case>& cases, const std::string& prefix = "") {
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.args);
+        const auto dir = scratch_dir();
+        write_text(dir / "s.json", kDiverging);
+        const CliResult r = run_tumble(dir, prefix + c.args);
+        EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("tumble: error: "), std::string::npos) << r.err;
+        EXPECT_EQ(files_in(dir), std::vector<std::string>{"s.json"});
+    }
+}
+
+TEST(ExitCodes, BadInputExitsTwoInEverySubcommand) {
+    check_cases({
+        {"render nosuch.json -o a.mp4", 2, "nosuch.json: file: no such file"},
+        {"render s.json -o a.avi", 2, "unknown output type"},
+        {"render s.json --frame 2 -o a.mp4", 2, "the output must end in .png"},
+        {"render s.json --compare euler,nosuch -o a.mp4", 2, "unknown integrator"},
+        {"simulate nosuch.json -o s.csv", 2, "nosuch.json: file: no such file"},
+        {"simulate s.json -o missing/deeper/s.csv", 2, "missing/deeper"},
+        {"explain nosuch.json", 2, "nosuch.json: file: no such file"},
+        {"explain s.json --dt -1", 2, "--dt"},
+        {"goldens check nosuch.json", 2, "nosuch.json"},
+        {"diff nosuch.png other.png", 2, "nosuch.png"},
+        {"study --quick -q -o missing/deeper/study", 2, "missing"},
+        {"bench-render nosuch-case", 2, "unknown benchmark case"},
+    });
+}
+
+TEST(ExitCodes, ADivergedRunExitsOneNamingFileBodyAndStep) {
+    check_cases({
+        {"render s.json --width 64 --height 48 -o d.mp4", 1, "s.json: body 0"},
+        {"render s.json --width 64 --height 48 -o frames/", 1, "is not finite after step 43"},
+        {"simulate s.json -o s.csv", 1, "s.json: body 0"},
+    });
+}
+
+TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
+    const auto dir = scratch_dir();
+    ASSERT_EQ(run_tumble(dir, "render --frame 0 --width 320 --height 180 -o a.png -q").exit_code, 0);
+    ASSERT_EQ(run_tumble(dir, "render --frame 99 --width 320 --height 180 -o b.png -q").exit_code,
+              0);
+    // 4 blocks (2 KiB in dash's 512-byte blocks): far less than any of these outputs.
+    const auto run_full = [&](const std::string& args) {
+        return run_shell(dir, "trap '' XFSZ; ulimit -f 4; exec \"$TUMBLE\" " + args);
+    };
+    struct Full {
+        const char* args;
+        const char* leaves_no; // an output that must not exist afterwards
+    };
+    for (const Full& c : std::vector<Full>{
+             {"render --duration 2 --width 320 --height 180 -o v.mp4 -q", "v.mp4"},
+             {"render --frame 0 --width 1280 --height 720 -o big.png -q", "big.png"},
+             {"simulate -o s.csv -q", "s.csv"},
+             {"diff a.png b.png --max-different 0 -o d.png", "d.png"},
+             {"bench-render default-preview --quick --repeats 1 --csv r.csv", "r.csv"},
+         }) {
+        SCOPED_TRACE(c.args);
+        const CliResult r = run_full(c.args);
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_NE(r.err.find("tumble: error: "), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / c.leaves_no));
+        for (const std::string& f : files_in(dir))
+            EXPECT_EQ(f.find(".partial"), std::string::npos) << f << " left behind";
+    }
+}
+
+// Starts `tumble <args>` in `dir`, waits until a file starting with `partial_prefix` has bytes
+// (progress, not a wall-clock guess; 60 s at most), sends `signal` and returns the exit code.
+int interrupt_when_writing(const std::filesystem::path& dir, const std::string& args,
+                           const std::string& partial_prefix, int signal) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (chdir(dir.c_str()) != 0) _exit(99);
+        if (!freopen("stderr.txt", "w", stderr)) _exit(97);
+        execl("/bin/sh", "sh", "-c", ("exec " + std::string(TUMBLE_EXE) + " " + args).c_str(),
+              static_cast<char*>(nullptr));
+        _exit(98);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    auto writing = [&] {
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+            if (e.path().filename().string().starts_with(partial_prefix) && e.file_size() > 0)
+                return true;
+        return false;
+    };
+    while (!writing() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    kill(pid, signal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST(ExitCodes, InterruptedRunsExitWith128PlusTheSignal) {
+    auto dir = scratch_dir();
+    EXPECT_EQ(interrupt_when_writing(dir, "simulate --duration 600 -o s.csv", ".s.csv", SIGTERM),
+              143)
+        << read_text(dir / "stderr.txt");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(interrupt_when_writing(dir,
+                                     "render --compare euler,rk4 --duration 600 --width 160 "
+                                     "--height 90 -o c.mp4",
+                                     ".c.mp4", SIGINT),
+              130)
+        << read_text(dir / "stderr.txt");
+    EXPECT_TRUE(std::filesystem::exists(dir / "c.mp4")); // finished so that it plays
+}
+
+} // namespace
+} // namespace tumble::test
