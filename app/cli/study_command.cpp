@@ -71,6 +71,47 @@ void print_summary(const Results& r, const std::string& dir) {
                 r.seconds_total);
 }
 
+// The work-precision grid, with a progress bar over its runs.
+void run_grid_with_progress(Results& r, const StudyCommand& cmd) {
+    std::size_t runs = 0;
+    for (const Problem& p : problems())
+        runs += step_counts(p, cmd.quick).size() * physics::integrators().size();
+    if (!cmd.quiet)
+        std::fprintf(stderr,
+                     "tumble study: %zu problems x %zu integrators, %zu runs on %d threads\n",
+                     problems().size(), physics::integrators().size(), runs, r.threads);
+    Progress progress("runs", static_cast<std::int64_t>(runs), cmd.quiet);
+    const Clock::time_point t0 = Clock::now();
+    r.rows = run_grid(problems(), cmd.quick, r.threads, r.timing,
+                      [&](int done, int) { progress.update(done); });
+    progress.finish();
+    r.seconds_grid = seconds_since(t0);
+}
+
+// Everything after the set-up: measure, analyse, write. Throws on any failure.
+void study(Results& r, const StudyCommand& cmd, Clock::time_point start) {
+    r.plotter = gnuplot_version(); // before the long part: a missing gnuplot fails at once
+    r.machine = describe_machine();
+    r.build = describe_build();
+    run_grid_with_progress(r, cmd);
+    const Clock::time_point t1 = Clock::now();
+    r.stability = stability_map(cmd.quick, r.threads);
+    r.seconds_stability = seconds_since(t1);
+    energy_traces(r, r.threads);
+
+    r.orders = fit_orders(r.rows);
+    std::vector<std::string> names;
+    for (const Problem& p : problems()) names.push_back(p.name);
+    r.recommendations = recommend(r.rows, names);
+
+    const std::filesystem::path dir(cmd.output);
+    write_plots(dir, r);
+    r.seconds_total = seconds_since(start);
+    write_csv(dir / "study.csv", r);
+    write_json(dir / "study.json", r);
+    write_report(dir / "report.md", r);
+}
+
 int run_study(const StudyCommand& cmd) {
     const Clock::time_point start = Clock::now();
     Results r;
@@ -85,42 +126,7 @@ int run_study(const StudyCommand& cmd) {
         throw io::BadInput(e.what()); // before the run: the output folder cannot be used
     }
     try {
-        r.plotter = gnuplot_version(); // before the long part: a missing gnuplot fails at once
-        r.machine = describe_machine();
-        r.build = describe_build();
-
-        std::size_t runs = 0;
-        for (const Problem& p : problems())
-            runs += step_counts(p, cmd.quick).size() * physics::integrators().size();
-        if (!cmd.quiet)
-            std::fprintf(stderr,
-                         "tumble study: %zu problems x %zu integrators, %zu runs on %d "
-                         "threads\n",
-                         problems().size(), physics::integrators().size(), runs, r.threads);
-        {
-            Progress progress("runs", static_cast<std::int64_t>(runs), cmd.quiet);
-            const Clock::time_point t0 = Clock::now();
-            r.rows = run_grid(problems(), cmd.quick, r.threads, r.timing,
-                              [&](int done, int) { progress.update(done); });
-            progress.finish();
-            r.seconds_grid = seconds_since(t0);
-        }
-        const Clock::time_point t1 = Clock::now();
-        r.stability = stability_map(cmd.quick, r.threads);
-        r.seconds_stability = seconds_since(t1);
-        energy_traces(r, r.threads);
-
-        r.orders = fit_orders(r.rows);
-        std::vector<std::string> names;
-        for (const Problem& p : problems()) names.push_back(p.name);
-        r.recommendations = recommend(r.rows, names);
-
-        const std::filesystem::path dir(cmd.output);
-        write_plots(dir, r);
-        r.seconds_total = seconds_since(start);
-        write_csv(dir / "study.csv", r);
-        write_json(dir / "study.json", r);
-        write_report(dir / "report.md", r);
+        study(r, cmd, start);
     } catch (const std::exception& e) { // a failed run (exit 1), named as the study's
         throw std::runtime_error(std::string("study: ") + e.what());
     }

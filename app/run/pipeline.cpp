@@ -85,81 +85,94 @@ class FirstError {
     std::exception_ptr error_;
 };
 
+// The pipeline's queues. Forward queues carry frames; return queues bring their buffers back for
+// reuse. Each return queue starts with every buffer, so the forward queues never hold more than n.
+struct Queues {
+    explicit Queues(std::size_t n) : views(n), free_views(n), images(n), free_images(n) {
+        for (std::size_t i = 0; i < n; ++i) {
+            free_views.push({});
+            free_images.push({});
+        }
+    }
+    // Records the first exception and wakes every stage so that each one stops.
+    void fail(std::exception_ptr e) {
+        error.set(e);
+        close_all();
+    }
+    void close_all() { views.close(), free_views.close(), images.close(), free_images.close(); }
+
+    Channel<render::SceneView> views, free_views;
+    Channel<render::Image> images, free_images;
+    FirstError error;
+};
+
+void physics_stage(const PipelineStages& stages, Queues& q, StageStats& stats) {
+    try {
+        while (auto view = q.free_views.pop()) {
+            const auto t = Clock::now();
+            const bool more = stages.produce(*view);
+            stats.busy += seconds_since(t);
+            if (!more) break;
+            ++stats.frames;
+            if (!q.views.push(std::move(*view))) break;
+        }
+    } catch (...) {
+        q.fail(std::current_exception());
+    }
+    q.views.close(); // no more frames: the render stage drains and stops
+}
+
+void render_stage(const PipelineStages& stages, Queues& q, StageStats& stats) {
+    try {
+        std::unique_ptr<render::Renderer> renderer = stages.make_renderer();
+        while (auto view = q.views.pop()) {
+            auto image = q.free_images.pop();
+            if (!image) break;
+            const auto t = Clock::now();
+            renderer->draw(*view, *image);
+            stats.busy += seconds_since(t);
+            ++stats.frames;
+            q.free_views.push(std::move(*view));
+            if (!q.images.push(std::move(*image))) break;
+        }
+    } catch (...) {
+        q.fail(std::current_exception());
+    }
+    q.images.close();
+    q.free_views.close(); // the producer may be waiting for a buffer that will never come
+}
+
+void output_stage(const PipelineStages& stages, Queues& q, StageStats& stats) {
+    try {
+        while (auto image = q.images.pop()) {
+            const auto t = Clock::now();
+            stages.consume(*image);
+            stats.busy += seconds_since(t);
+            ++stats.frames;
+            q.free_images.push(std::move(*image));
+        }
+    } catch (...) {
+        q.fail(std::current_exception());
+    }
+}
+
 } // namespace
 
 PipelineStats run_pipeline(const PipelineStages& stages, int depth) {
-    const auto n = std::size_t(depth < 1 ? 1 : depth);
-    // Forward queues carry frames; return queues bring their buffers back for reuse. Each return
-    // queue starts with every buffer, so the forward queues can never hold more than n.
-    Channel<render::SceneView> views(n), free_views(n);
-    Channel<render::Image> images(n), free_images(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        free_views.push({});
-        free_images.push({});
-    }
+    Queues q(std::size_t(depth < 1 ? 1 : depth));
     PipelineStats stats;
-    FirstError error;
-    auto stop_all = [&] { views.close(), free_views.close(), images.close(), free_images.close(); };
     const auto t0 = Clock::now();
     const double cpu0 = process_cpu_seconds();
-
-    std::thread physics([&] {
-        try {
-            while (auto view = free_views.pop()) {
-                const auto t = Clock::now();
-                const bool more = stages.produce(*view);
-                stats.physics.busy += seconds_since(t);
-                if (!more) break;
-                ++stats.physics.frames;
-                if (!views.push(std::move(*view))) break;
-            }
-        } catch (...) {
-            error.set(std::current_exception());
-            stop_all();
-        }
-        views.close(); // no more frames: the render stage drains and stops
-    });
-
-    std::thread render([&] {
-        try {
-            std::unique_ptr<render::Renderer> renderer = stages.make_renderer();
-            while (auto view = views.pop()) {
-                auto image = free_images.pop();
-                if (!image) break;
-                const auto t = Clock::now();
-                renderer->draw(*view, *image);
-                stats.render.busy += seconds_since(t);
-                ++stats.render.frames;
-                free_views.push(std::move(*view));
-                if (!images.push(std::move(*image))) break;
-            }
-        } catch (...) {
-            error.set(std::current_exception());
-            stop_all();
-        }
-        images.close();
-        free_views.close(); // the producer may be waiting for a buffer that will never come
-    });
-
-    try {
-        while (auto image = images.pop()) {
-            const auto t = Clock::now();
-            stages.consume(*image);
-            stats.output.busy += seconds_since(t);
-            ++stats.output.frames;
-            free_images.push(std::move(*image));
-        }
-    } catch (...) {
-        error.set(std::current_exception());
-        stop_all();
-    }
-    stop_all();
+    std::thread physics([&] { physics_stage(stages, q, stats.physics); });
+    std::thread render([&] { render_stage(stages, q, stats.render); });
+    output_stage(stages, q, stats.output); // on the calling thread
+    q.close_all();
     physics.join();
     render.join();
     stats.wall = seconds_since(t0);
     stats.cpu = process_cpu_seconds() - cpu0;
     stats.frames = stats.output.frames;
-    error.rethrow();
+    q.error.rethrow();
     return stats;
 }
 
