@@ -89,7 +89,7 @@ void run_grid_with_progress(Results& r, const StudyCommand& cmd) {
 }
 
 // Everything after the set-up: measure, analyse, write. Throws on any failure.
-void study(Results& r, const StudyCommand& cmd, Clock::time_point start) {
+void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point start) {
     r.plotter = gnuplot_version(); // before the long part: a missing gnuplot fails at once
     r.machine = describe_machine();
     r.build = describe_build();
@@ -126,7 +126,7 @@ int run_study(const StudyCommand& cmd) {
         throw io::BadInput(e.what()); // before the run: the output folder cannot be used
     }
     try {
-        study(r, cmd, start);
+        measure_and_write(r, cmd, start);
     } catch (const std::exception& e) { // a failed run (exit 1), named as the study's
         throw std::runtime_error(std::string("study: ") + e.what());
     }
