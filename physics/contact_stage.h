@@ -6,6 +6,7 @@
 #include "physics/broadphase.h"
 #include "physics/collide.h"
 #include "physics/contact_solver.h"
+#include "physics/integrator.h"
 #include "physics/thread_pool.h"
 
 #include <chrono>
@@ -15,9 +16,6 @@
 #include <vector>
 
 namespace tumble::physics {
-
-// The named integrator over a list of dynamic bodies (integrators.h).
-using IntegrateFn = void (*)(const Model&, State&, double, std::span<const int>);
 
 // Milliseconds since the last lap (steady clock), for the profile.
 class Stopwatch {

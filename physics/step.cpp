@@ -1,5 +1,8 @@
 // One step of the simulation, assembled from what the scene contains (Model::passes).
 //
+// The named integrator is the function in its row of the registry (integrator.h), called once per
+// step or substep over the whole list of bodies.
+//
 // A scene whose shapes can never touch (can_touch.h: one body, none dynamic, or bodies whose free
 // flight keeps them apart) runs only the named integrator over the step h, then the finite check.
 // Nothing else is built or run: no broad phase, no buffers, no threads ("model only what a scene
@@ -52,7 +55,7 @@
 // The integrator call is serial.
 #include "physics/step.h"
 
-#include "physics/integrators.h"
+#include "physics/integrator.h"
 
 namespace tumble::physics {
 
@@ -74,36 +77,6 @@ void check_finite(const Model& m, const State& s) {
 
 namespace {
 
-// The named integrator over one step or substep h (a switch per call, no virtual call per body).
-void integrate(const Model& m, State& s, double h, std::span<const int> bodies) {
-    switch (m.integrator) {
-    case Integrator::Euler:
-        integrate_euler(m, s, h, bodies);
-        break;
-    case Integrator::EulerMomentum:
-        integrate_euler_momentum(m, s, h, bodies);
-        break;
-    case Integrator::SymplecticEuler:
-        integrate_symplectic_euler(m, s, h, bodies);
-        break;
-    case Integrator::ImplicitGyro:
-        integrate_implicit_gyro(m, s, h, bodies);
-        break;
-    case Integrator::Rk4:
-        integrate_rk4(m, s, h, bodies);
-        break;
-    case Integrator::Splitting:
-        integrate_splitting(m, s, h, bodies);
-        break;
-    case Integrator::Midpoint:
-        integrate_midpoint(m, s, h, bodies);
-        break;
-    case Integrator::Splitting4:
-        integrate_splitting4(m, s, h, bodies);
-        break;
-    }
-}
-
 StepWorkspace& thread_workspace() {
     thread_local StepWorkspace workspace(1);
     return workspace;
@@ -118,6 +91,8 @@ void step(const Model& m, State& s) {
 }
 
 void step(const Model& m, State& s, StepWorkspace& workspace) {
+    // The named integrator: its row of the registry (integrator.h), one call per step or substep.
+    const IntegrateFn integrate = integrator_info(m.integrator).integrate;
     if (m.passes.contacts)
         workspace.contacts.step(m, s, integrate, workspace.pool);
     else
