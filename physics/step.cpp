@@ -9,7 +9,8 @@
 // requires"; `tumble explain` says which).
 //
 // A scene with contacts runs the contact stage (contact_stage.h), which wraps the integrator in
-// the soft step of Box2D v3 (Catto, "Solver2D", 2024):
+// the soft step of Box2D v3 (Catto, "Solver2D", 2024). ContactStage::step (contact_stage.cpp) is
+// this list, and each stage lives in the file named after it:
 //
 //   1. find     poses and bounding boxes grown by the distance each body can move in h; uniform-
 //               grid broad phase (broadphase.h); narrow phase (collide.h) with speculative
@@ -17,14 +18,20 @@
 //               can meet within the step is a contact now: nothing tunnels through anything as
 //               long as it moves less than its own size in a step (a speed-aware bound, not a
 //               swept time-of-impact search; a 50 m/s ball against a 1 cm wall is a test).
-//               Points keep feature ids, and last step's impulses carry over to the same ids.
-//   2. wake     an awake body touching a sleeping one wakes the sleeper's island (sleep.cpp).
-//   3. prepare  anchors, effective masses, tangents; graph colouring (no colour holds two
-//               constraints on one moving body) fixes the solve order.
+//               Points keep feature ids, and last step's impulses carry over to the same ids
+//               (contact_find.cpp).
+//   2. wake     an awake body touching a sleeping one wakes the sleeper's island
+//               (contact_wake.cpp).
+//   3. prepare  mass properties and loads at the start of the step; graph colouring (no colour
+//               holds two constraints on one moving body) fixes the solve order; anchors,
+//               effective masses, tangents; the substep's soft-contact coefficients
+//               (contact_prepare.cpp).
 //   4. impacts  restitution: approaching points that close within the step get pairwise
 //               Newton collisions, swept until no impact is left, energy-consistent with the bounce
-//               happening inside the step (contact_impacts.cpp).
-//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n:
+//               happening inside the step; an isolated bounce is moved to its moment of contact
+//               once the substeps are done (contact_impacts.cpp).
+//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n
+//               (contact_substeps.cpp):
 //        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact
 //        b. solve      warm start, then one Gauss-Seidel sweep: soft non-penetration (pushes
 //                      overlap out as a stiff damped spring), Coulomb friction with two
@@ -33,7 +40,13 @@
 //                      term, free flight); bodies in contact then move by x += h' v_solved
 //        d. relax      one more sweep without the push-out bias, so position correction never
 //                      becomes kinetic energy
-//   6. store    impulses into the State (warm start of the next step); sleeping (sleep.cpp).
+//   6. store    impulses into this step's contacts, which become the State's contact cache (the
+//               warm start of the next step; contact_store.cpp).
+//   7. sleep    islands slow for long enough fall asleep (contact_sleep.cpp).
+//
+// With no constraint to solve (every contact between bodies that cannot move, or none), 4 and 5
+// are replaced by the integrator over the whole step h for every awake body (free flight, in
+// contact_substeps.cpp): the same bits as a scene without contacts.
 //
 // How contacts meet the integrators (5a-5c). The solver computes impulses from predicted
 // velocities v + h' F/m, the velocities the step would end with, and the integrator then adds the
