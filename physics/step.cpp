@@ -60,12 +60,13 @@
 // the constraints were solved for, and resting stays resting with every integrator.
 //
 // Sleeping bodies are skipped: the integrator still visits them (its interface steps every
-// dynamic body), and their pose is restored after it; they are never solved.
+// dynamic body), and their pose is restored after it, with v = w = 0; they are never solved.
 //
-// Threads (step(model, state, workspace) with a workspace of 2 or more): the broad and narrow
-// phases, preparation and each colour of each sweep are split into fixed ranges per worker;
-// every worker writes only its own outputs, so states are bit-identical for any thread count.
-// The integrator call is serial.
+// Threads (step(model, state, workspace) with a workspace of 2 or more, from
+// world.parallel_min_bodies dynamic bodies on): the broad and narrow phases, preparation, each
+// colour of each sweep and the integrator calls are split into fixed ranges per worker; every
+// worker writes only its own outputs (an integrator updates each body from that body's state
+// alone), so states are bit-identical for any thread count.
 #include "physics/step.h"
 
 #include "physics/integrator.h"
