@@ -1,7 +1,9 @@
 #pragma once
 // The contact stage's part of the State: everything a step carries into the next one, so that a
 // copied State continues bit-identically. Flat arrays, one entry per manifold (a pair of bodies in
-// contact) and one per contact point.
+// contact) and one per contact point. Written only by the contact stage: each step finds its
+// manifolds with last step's impulses carried over by feature id (contact_find.cpp) and stores
+// its own impulses into them before they replace the State's (contact_store.cpp).
 #include "physics/math.h"
 
 #include <cstdint>
@@ -29,7 +31,9 @@ struct ContactCache {
 };
 
 // Sleeping: a body at rest (with everything it touches) for time_to_sleep stops being simulated
-// until something awake touches it. Sized to the body count when the model has a contact stage.
+// until something awake touches it. Sized to the body count for every model by initial_state()
+// (build.h); written only by the contact stage's wake (contact_wake.cpp: clears asleep and
+// slow_time) and sleep (contact_sleep.cpp: counts slow_time, sets asleep and island).
 struct SleepState {
     std::vector<std::uint8_t> asleep; // per body: 1 while asleep (v = w = 0, not integrated)
     std::vector<double> slow_time;    // per body: s it has been slower than the sleep speed

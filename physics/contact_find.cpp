@@ -1,4 +1,4 @@
-// Contact stage, part 1: which bodies touch. Poses and swept bounding boxes, the broad phase, the
+// Contact stage, find: which bodies touch. Poses and swept bounding boxes, the broad phase, the
 // narrow phase with warm-start matching against last step's contacts, and contacts of sleeping
 // bodies carried over unchanged (they have not moved, so their manifolds are still exact).
 #include "physics/contact_stage.h"
@@ -26,9 +26,34 @@ double pair_margin(const Model& m, const State& s, int a, int b, double h) {
     return m.contact.speculative_distance + h * (rel + spin);
 }
 
+// Last step's impulses at the point of manifold `o` (-1: none) with p's feature id, if any.
+void carry_impulses(const ContactCache& old, int o, CachedPoint& p) {
+    for (int j = 0; o >= 0 && j < old.count[o]; ++j) {
+        const CachedPoint& q = old.points[old.first[o] + j];
+        if (q.id == p.id) {
+            p.normal_impulse = q.normal_impulse;
+            p.friction_impulse = q.friction_impulse;
+            break;
+        }
+    }
+}
+
 } // namespace
 
-void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& pool) {
+void ContactStage::find(const Model& m, const State& s, ThreadPool& pool) {
+    Stopwatch clock;
+    sweep_bounds(m, s, pool);
+    const double poses = clock.lap();
+    broad_phase(m, pool);
+    profile_.broad = clock.lap();
+    profile_.broad += poses;
+    index_old_contacts(s.contacts);
+    narrow_phase(m, s, pool);
+    merge_found(s.contacts);
+    profile_.narrow = clock.lap();
+}
+
+void ContactStage::sweep_bounds(const Model& m, const State& s, ThreadPool& pool) {
     const int n = m.body_count();
     pose_.resize(n);
     box_.resize(n);
@@ -50,15 +75,22 @@ void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& po
     });
 }
 
-void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
-    Stopwatch clock;
+void ContactStage::broad_phase(const Model& m, ThreadPool& pool) {
     broad_.build(m, box_, awake_);
     const int workers = pool.size();
     pairs_.resize(workers);
     found_.resize(workers);
+    const int queries = static_cast<int>(broad_.queries().size());
+    pool.run([&](int worker) {
+        int begin, end;
+        ThreadPool::range(queries, workers, worker, begin, end);
+        pairs_[worker].clear();
+        broad_.query(m, box_, pose_, plane_margin_, begin, end, pairs_[worker]);
+    });
+}
 
-    // Last step's manifolds by pair key (open addressing, at most half full).
-    const ContactCache& old = s.contacts;
+// Last step's manifolds by pair key (open addressing, at most half full).
+void ContactStage::index_old_contacts(const ContactCache& old) {
     std::uint32_t size = 16;
     while (size < 2u * static_cast<std::uint32_t>(old.size())) size <<= 1;
     old_keys_.assign(size, kEmpty);
@@ -69,23 +101,20 @@ void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
         old_keys_[slot] = old.pair[k];
         old_slots_[slot] = k;
     }
-    auto find_old = [&](std::uint64_t key) {
-        std::uint32_t slot = slot_hash(key) & (size - 1);
-        while (old_keys_[slot] != kEmpty) {
-            if (old_keys_[slot] == key) return old_slots_[slot];
-            slot = (slot + 1) & (size - 1);
-        }
-        return -1;
-    };
+}
 
-    const int queries = static_cast<int>(broad_.queries().size());
-    pool.run([&](int worker) {
-        int begin, end;
-        ThreadPool::range(queries, workers, worker, begin, end);
-        pairs_[worker].clear();
-        broad_.query(m, box_, pose_, plane_margin_, begin, end, pairs_[worker]);
-    });
-    profile_.broad = clock.lap();
+int ContactStage::old_manifold(std::uint64_t key) const {
+    const std::uint32_t size = static_cast<std::uint32_t>(old_keys_.size());
+    std::uint32_t slot = slot_hash(key) & (size - 1);
+    while (old_keys_[slot] != kEmpty) {
+        if (old_keys_[slot] == key) return old_slots_[slot];
+        slot = (slot + 1) & (size - 1);
+    }
+    return -1;
+}
+
+void ContactStage::narrow_phase(const Model& m, const State& s, ThreadPool& pool) {
+    const ContactCache& old = s.contacts;
     pool.run([&](int worker) {
         const std::vector<std::uint64_t>& pairs = pairs_[worker];
         ContactCache& out = found_[worker];
@@ -95,7 +124,7 @@ void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
             const int a = pair_first(key), b = pair_second(key);
             collide(m, a, pose_[a], b, pose_[b], pair_margin(m, s, a, b, h_), man);
             if (man.count == 0) continue;
-            const int o = find_old(key);
+            const int o = old_manifold(key);
             out.pair.push_back(key);
             out.normal.push_back(man.normal);
             out.first.push_back(static_cast<int>(out.points.size()));
@@ -103,21 +132,16 @@ void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
             for (int k = 0; k < man.count; ++k) {
                 CachedPoint p{man.points[k].point, man.points[k].separation, man.points[k].id, 0.0,
                               Vec3::Zero()};
-                for (int j = 0; o >= 0 && j < old.count[o]; ++j) {
-                    const CachedPoint& q = old.points[old.first[o] + j];
-                    if (q.id == p.id) {
-                        p.normal_impulse = q.normal_impulse;
-                        p.friction_impulse = q.friction_impulse;
-                        break;
-                    }
-                }
+                carry_impulses(old, o, p);
                 out.points.push_back(p);
             }
         }
     });
+}
 
-    // Merge in worker order (the order a single thread would produce), then carry over the
-    // manifolds of pairs that no awake body looked at: both bodies asleep or static.
+// Merge in worker order (the order a single thread would produce), then carry over the manifolds
+// of pairs that no awake body looked at: both bodies asleep or static.
+void ContactStage::merge_found(const ContactCache& old) {
     next_.clear();
     stats_.pairs = 0;
     auto append = [&](const ContactCache& from, int k) {
@@ -128,14 +152,13 @@ void ContactStage::find_contacts(const Model& m, State& s, ThreadPool& pool) {
         for (int j = 0; j < from.count[k]; ++j)
             next_.points.push_back(from.points[from.first[k] + j]);
     };
-    for (int w = 0; w < workers; ++w) {
+    for (int w = 0; w < static_cast<int>(found_.size()); ++w) {
         stats_.pairs += static_cast<int>(pairs_[w].size());
         for (int k = 0; k < found_[w].size(); ++k) append(found_[w], k);
     }
     narrow_count_ = next_.size();
     for (int k = 0; k < old.size(); ++k)
         if (!awake_[pair_first(old.pair[k])] && !awake_[pair_second(old.pair[k])]) append(old, k);
-    profile_.narrow = clock.lap();
 }
 
 } // namespace tumble::physics

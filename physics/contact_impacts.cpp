@@ -1,4 +1,6 @@
-// Impacts: restitution as sequential pairwise collisions at the start of the step.
+// Contact stage, impacts: restitution as sequential pairwise collisions at the start of the step,
+// before the substeps (ContactStage::impacts), and the in-step correction applied after them
+// (ContactStage::apply_impact_shifts). The kernels per manifold are declared in contact_solver.h.
 //
 // A point whose bodies approach faster than the restitution threshold, and whose gap will close
 // within this step if they keep flying freely, is an impact: the pair gets the normal impulse of
@@ -30,6 +32,7 @@
 // point; in a chain, or a face landing on several points at once, the corrections would interact,
 // and the turn-round stays early by at most |vn| h with the energy still exact.)
 #include "physics/contact_kernels.h"
+#include "physics/contact_stage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +41,7 @@ namespace tumble::physics {
 namespace {
 
 constexpr double kArrival = 1e-4; // m
+constexpr int kImpactSweeps = 8;  // a blow crosses at most this many contacts of a chain per step
 
 double normal_acceleration(const SolverManifold& c, const SolverBodies& bodies) {
     const Vec3 acc_a = c.move_a ? bodies.accel[c.a] : Vec3(Vec3::Zero());
@@ -114,6 +118,56 @@ bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const So
     const double s_early = s0 + target * h + 0.5 * an * h * h;
     ds = s_true - s_early;
     return true;
+}
+
+// Sweeps in colour order, on the velocities at the start of the step, until no impact is left.
+void ContactStage::impacts(const Model& m, State& s, ThreadPool& pool) {
+    Stopwatch clock;
+    impact_flags_.assign(pool.size(), 0);
+    stats_.impacts = 0;
+    for (int sweep = 0; sweep < kImpactSweeps; ++sweep) {
+        std::fill(impact_flags_.begin(), impact_flags_.end(), 0);
+        for_each_colour(pool, [&](int begin, int end, int worker) {
+            for (int c = begin; c < end; ++c)
+                if (resolve_impacts(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, s))
+                    impact_flags_[worker] = 1;
+        });
+        if (std::find(impact_flags_.begin(), impact_flags_.end(), 1) == impact_flags_.end()) break;
+        ++stats_.impacts;
+    }
+    shifted_.clear();
+    if (stats_.impacts > 0) plan_impact_shifts(m, s);
+    profile_.impacts = clock.lap();
+}
+
+// Impacts that happened in isolation (one impacting point, neither body in another impact) move
+// to the moment of contact: impact_in_step() sets the velocity now, and the position change waits
+// in shift_ until the substeps are done.
+void ContactStage::plan_impact_shifts(const Model& m, State& s) {
+    impact_count_.assign(m.body_count(), 0);
+    for (const SolverManifold& c : manifolds_) {
+        bool hit = false;
+        for (int k = 0; k < c.count; ++k) hit |= points_[c.first + k].impact_normal != 0.0;
+        if (!hit) continue;
+        impact_count_[c.a] += c.move_a;
+        impact_count_[c.b] += c.move_b;
+    }
+    shift_.resize(m.body_count());
+    for (const SolverManifold& c : manifolds_) {
+        if ((c.move_a && impact_count_[c.a] != 1) || (c.move_b && impact_count_[c.b] != 1))
+            continue;
+        double ds = 0.0;
+        if (!impact_in_step(c, &points_[c.first], bodies_, ctx_, s, ds)) continue;
+        const double ma = c.move_a ? m.inv_mass[c.a] : 0.0;
+        const double mb = c.move_b ? m.inv_mass[c.b] : 0.0;
+        if (c.move_a) shift_[c.a] = -ds * ma / (ma + mb) * c.normal, shifted_.push_back(c.a);
+        if (c.move_b) shift_[c.b] = ds * mb / (ma + mb) * c.normal, shifted_.push_back(c.b);
+    }
+}
+
+// After the substeps: the isolated impacts' bodies end where a bounce inside the step puts them.
+void ContactStage::apply_impact_shifts(State& s) {
+    for (int i : shifted_) s.x[i] += shift_[i];
 }
 
 } // namespace tumble::physics

@@ -28,7 +28,7 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
     c.t2 = n.cross(c.t1);
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
-        // p.ra/p.rb hold the world contact point on entry (see contact_step.cpp).
+        // p.ra/p.rb hold the world contact point on entry (see contact_prepare.cpp).
         const Vec3 point = p.ra;
         p.ra = point - s.x[c.a];
         p.rb = point - s.x[c.b];

@@ -64,16 +64,19 @@ struct SolverManifold {
     int cache;        // manifold index in the contact cache (impulse write-back)
 };
 
-// Per body, valid for bodies in constraints (indexed by body).
+// Per body, indexed by body. Set for the awake bodies at the start of the step
+// (contact_prepare.cpp); delta, turn and inv_inertia then follow the bodies in constraints through
+// the substeps (updated before each predict and relax, ContactStage::track_motion in
+// contact_substeps.cpp).
 struct SolverBodies {
-    std::vector<Mat3> inv_inertia; // world, at the start of the step
+    std::vector<Mat3> inv_inertia; // world I_w^-1, at the orientation of the last update
     std::vector<double> inv_i;     // isotropic bodies: 1/I (then inv_inertia is not used)
     std::vector<std::uint8_t> isotropic;
     std::vector<double> inv_mass;
     std::vector<Vec3> x0; // centre of mass at the start of the step
     std::vector<Quat> q0;
-    std::vector<Vec3> delta;           // motion since the start of the step (this substep)
-    std::vector<Mat3> turn;            // rotation since the start of the step
+    std::vector<Vec3> delta;           // motion since the start of the step, at the last update
+    std::vector<Mat3> turn;            // rotation since the start of the step, at the last update
     std::vector<std::uint8_t> rotates; // anchors turn with the body (not for spheres)
     std::vector<Vec3> accel;           // F / m, m/s^2 (gravity and applied force)
     std::vector<Vec3> ang_accel;       // I_w^-1 tau_applied, rad/s^2

@@ -1,185 +1,27 @@
-// Contact stage, part 2: constraints, colouring, impacts, the substeps and impulse storage.
+// Contact stage: one step as its list of stages, each in the file named for it. What each stage
+// does and why is at the top of step.cpp. Each stage records its own wall time (profile()).
 #include "physics/contact_stage.h"
 
-#include "physics/forces.h"
-
-#include <algorithm>
-#include <cmath>
-
 namespace tumble::physics {
-namespace {
-
-constexpr int kColours = ContactStage::kColours;
-
-} // namespace
-
-void ContactStage::wake_touched(const Model& m, State& s) {
-    if (!m.contact.sleeping) return;
-    // An awake body touching a sleeping one wakes the sleeper's whole island.
-    island_min_.clear();
-    for (int k = 0; k < narrow_count_; ++k) {
-        const int a = pair_first(next_.pair[k]), b = pair_second(next_.pair[k]);
-        for (const auto& [sleeper, other] : {std::pair{a, b}, std::pair{b, a}})
-            if (m.is_dynamic(sleeper) && !awake_[sleeper] && awake_[other])
-                island_min_.push_back(s.sleep.island[sleeper]);
-    }
-    if (island_min_.empty()) return;
-    std::sort(island_min_.begin(), island_min_.end());
-    for (int i : m.dynamic_bodies) {
-        if (!s.sleep.asleep[i] ||
-            !std::binary_search(island_min_.begin(), island_min_.end(), s.sleep.island[i]))
-            continue;
-        s.sleep.asleep[i] = 0;
-        s.sleep.slow_time[i] = 0.0;
-        awake_[i] = 1;
-    }
-}
-
-void ContactStage::build_constraints(const Model& m, const State& s, ThreadPool& pool) {
-    const int n = m.body_count();
-    const int count = next_.size();
-    // Greedy colouring in cache order: the lowest colour whose bodies exclude both moving bodies.
-    const int words = (n + 63) / 64;
-    colour_bits_.assign(static_cast<std::size_t>(kColours) * words, 0);
-    colour_of_.assign(count, -1);
-    constraint_of_.assign(count, -1);
-    colour_start_.assign(kColours + 2, 0);
-    in_constraint_.assign(n, 0);
-    stats_.points = static_cast<int>(next_.points.size());
-    stats_.max_overlap = 0.0;
-    for (const CachedPoint& p : next_.points)
-        stats_.max_overlap = std::max(stats_.max_overlap, -p.separation);
-    for (int k = 0; k < count; ++k) {
-        const int a = pair_first(next_.pair[k]), b = pair_second(next_.pair[k]);
-        const bool ma = awake_[a], mb = awake_[b];
-        if (!ma && !mb) continue;
-        in_constraint_[a] |= ma;
-        in_constraint_[b] |= mb;
-        int c = 0;
-        for (; c < kColours; ++c) {
-            std::uint64_t* bits = &colour_bits_[static_cast<std::size_t>(c) * words];
-            const bool busy =
-                (ma && (bits[a >> 6] >> (a & 63) & 1)) || (mb && (bits[b >> 6] >> (b & 63) & 1));
-            if (busy) continue;
-            if (ma) bits[a >> 6] |= std::uint64_t{1} << (a & 63);
-            if (mb) bits[b >> 6] |= std::uint64_t{1} << (b & 63);
-            break;
-        }
-        colour_of_[k] = c;
-        ++colour_start_[c + 1];
-    }
-    for (int c = 0; c <= kColours; ++c) colour_start_[c + 1] += colour_start_[c];
-    colour_count_ = 0;
-    for (int c = 0; c <= kColours; ++c)
-        if (colour_start_[c + 1] > colour_start_[c]) colour_count_ = c + 1;
-    stats_.colours = colour_count_;
-    const int constraints = colour_start_[kColours + 1];
-    stats_.constraints = constraints;
-    manifolds_.resize(constraints);
-
-    // Slots: constraint k of colour c goes to the next free slot of c; points follow in the same
-    // order.
-    point_start_.assign(constraints + 1, 0);
-    {
-        std::vector<int>& cursor = cursor_;
-        cursor.assign(colour_start_.begin(), colour_start_.end());
-        for (int k = 0; k < count; ++k) {
-            if (colour_of_[k] < 0) continue;
-            const int slot = cursor[colour_of_[k]]++;
-            constraint_of_[k] = slot;
-            point_start_[slot + 1] = next_.count[k];
-        }
-    }
-    for (int c = 0; c < constraints; ++c) point_start_[c + 1] += point_start_[c];
-    points_.resize(point_start_[constraints]);
-
-    pool.for_ranges(count, 256, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) {
-            const int slot = constraint_of_[k];
-            if (slot < 0) continue;
-            const int a = pair_first(next_.pair[k]), b = pair_second(next_.pair[k]);
-            SolverManifold& c = manifolds_[slot];
-            c.a = a, c.b = b;
-            c.move_a = awake_[a], c.move_b = awake_[b];
-            c.normal = next_.normal[k];
-            c.friction = mix_friction(m.material[a], m.material[b]);
-            c.restitution = mix_restitution(m.material[a], m.material[b]);
-            c.first = point_start_[slot];
-            c.count = next_.count[k];
-            c.cache = k;
-            SolverPoint* pts = &points_[c.first];
-            for (int j = 0; j < c.count; ++j) {
-                const CachedPoint& q = next_.points[next_.first[k] + j];
-                pts[j].ra = q.point; // prepare_manifold() turns it into the anchors
-                pts[j].separation0 = q.separation;
-                pts[j].normal_impulse = q.normal_impulse;
-            }
-            prepare_manifold(c, pts, bodies_, s);
-            for (int j = 0; j < c.count; ++j) { // last step's friction on this step's tangents
-                const Vec3& f = next_.points[next_.first[k] + j].friction_impulse;
-                pts[j].friction_impulse[0] = f.dot(c.t1);
-                pts[j].friction_impulse[1] = f.dot(c.t2);
-            }
-        }
-    });
-    constrained_.clear();
-    for (int i = 0; i < n; ++i)
-        if (in_constraint_[i]) constrained_.push_back(i);
-}
 
 void ContactStage::step(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool) {
     h_ = m.dt;
     const ThreadPool::Serial serial(pool, steps_on_one_thread(m.contact, m.dynamic_bodies.size()));
     stats_.workers = pool.size();
+    profile_ = {};
+    find(m, s, pool);    // 1. contact_find.cpp
+    wake(m, s);          // 2. contact_wake.cpp
+    prepare(m, s, pool); // 3. contact_prepare.cpp
+    if (manifolds_.empty()) {
+        free_flight(m, s, integrate, pool); // contact_substeps.cpp: nothing to solve
+    } else {
+        impacts(m, s, pool);             // 4. contact_impacts.cpp
+        substeps(m, s, integrate, pool); // 5. contact_substeps.cpp: a-d each substep
+        apply_impact_shifts(s);          //    contact_impacts.cpp: bounces timed inside the step
+    }
     Stopwatch clock;
-    prepare_bodies(m, s, pool);
-    const double poses = clock.lap();
-    find_contacts(m, s, pool);
-    profile_.broad += poses;
-    clock.lap();
-    wake_touched(m, s);
-
-    // Mass properties and loads of the awake bodies, at the start of the step.
-    const int n = m.body_count();
-    bodies_.inv_inertia.resize(n);
-    bodies_.inv_i.resize(n);
-    bodies_.isotropic.resize(n);
-    bodies_.inv_mass.resize(n);
-    bodies_.x0.resize(n);
-    bodies_.q0.resize(n);
-    bodies_.delta.resize(n);
-    bodies_.turn.resize(n);
-    bodies_.rotates.resize(n);
-    bodies_.accel.resize(n);
-    bodies_.ang_accel.resize(n);
-    pool.for_ranges(n, 256, [&](int begin, int end, int) {
-        for (int i = begin; i < end; ++i) {
-            if (!awake_[i]) continue;
-            bodies_.isotropic[i] = m.isotropic[i];
-            bodies_.inv_i[i] = m.inv_inertia[i].x();
-            if (!m.isotropic[i]) {
-                const Mat3 r = s.q[i].toRotationMatrix();
-                bodies_.inv_inertia[i] = r * m.inv_inertia[i].asDiagonal() * r.transpose();
-            }
-            bodies_.inv_mass[i] = m.inv_mass[i];
-            bodies_.x0[i] = s.x[i];
-            bodies_.q0[i] = s.q[i];
-            bodies_.delta[i] = Vec3::Zero();
-            bodies_.turn[i] = Mat3::Identity();
-            bodies_.rotates[i] = m.shape[i].kind != ShapeKind::Sphere;
-            bodies_.accel[i] = m.inv_mass[i] * net_force(m, i);
-            bodies_.ang_accel[i] = m.isotropic[i] ? Vec3(bodies_.inv_i[i] * net_torque(m, i))
-                                                  : Vec3(bodies_.inv_inertia[i] * net_torque(m, i));
-        }
-    });
-    build_constraints(m, s, pool);
-    profile_.prepare = clock.lap();
-    solve_and_integrate(m, s, integrate, pool);
-    clock.lap();
-    store_impulses();
-    update_sleep(m, s);
-    std::swap(s.contacts, next_);
-    stats_.manifolds = s.contacts.size();
+    store(s);    // 6. contact_store.cpp
+    sleep(m, s); // 7. contact_sleep.cpp
     profile_.finish = clock.lap();
 }
 

@@ -6,6 +6,7 @@
 #include "physics/broadphase.h"
 #include "physics/collide.h"
 #include "physics/contact_solver.h"
+#include "physics/integrator.h"
 #include "physics/thread_pool.h"
 
 #include <chrono>
@@ -15,9 +16,6 @@
 #include <vector>
 
 namespace tumble::physics {
-
-// The named integrator over a list of dynamic bodies (integrators.h).
-using IntegrateFn = void (*)(const Model&, State&, double, std::span<const int>);
 
 // Milliseconds since the last lap (steady clock), for the profile.
 class Stopwatch {
@@ -65,14 +63,42 @@ class ContactStage {
     const ContactProfile& profile() const { return profile_; }
 
   private:
+    // 1. find (contact_find.cpp)
+    void find(const Model& m, const State& s, ThreadPool& pool);
+    void sweep_bounds(const Model& m, const State& s, ThreadPool& pool);
+    void broad_phase(const Model& m, ThreadPool& pool);
+    void index_old_contacts(const ContactCache& old);
+    int old_manifold(std::uint64_t key) const; // in last step's contacts, or -1
+    void narrow_phase(const Model& m, const State& s, ThreadPool& pool);
+    void merge_found(const ContactCache& old);
+    // 2. wake (contact_wake.cpp)
+    void wake(const Model& m, State& s);
+    // 3. prepare (contact_prepare.cpp)
+    void prepare(const Model& m, const State& s, ThreadPool& pool);
     void prepare_bodies(const Model& m, const State& s, ThreadPool& pool);
-    void find_contacts(const Model& m, State& s, ThreadPool& pool);
-    void wake_touched(const Model& m, State& s);
-    void build_constraints(const Model& m, const State& s, ThreadPool& pool);
-    void solve_and_integrate(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
+    void colour_constraints(const Model& m);
+    void assign_slots();
+    void prepare_constraints(const Model& m, const State& s, ThreadPool& pool);
+    void prepare_context(const Model& m);
+    // 4. impacts (contact_impacts.cpp)
+    void impacts(const Model& m, State& s, ThreadPool& pool);
+    void plan_impact_shifts(const Model& m, State& s);
+    void apply_impact_shifts(State& s);
+    // 5. substeps (contact_substeps.cpp)
+    void substeps(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
+    void free_flight(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
+    void predict(const Model& m, State& s, ThreadPool& pool);
+    void solve(State& s, ThreadPool& pool);
+    void integrate_substep(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
+    void relax(const Model& m, State& s, ThreadPool& pool);
+    void track_motion(const Model& m, const State& s, ThreadPool& pool);
+    void integrate_awake(const Model& m, State& s, IntegrateFn integrate, double h,
+                         ThreadPool& pool);
     void integrate_all(const Model& m, State& s, IntegrateFn integrate, double h, ThreadPool& pool);
-    void store_impulses();
-    void update_sleep(const Model& m, State& s);
+    // 6. store (contact_store.cpp)
+    void store(State& s);
+    // 7. sleep (contact_sleep.cpp)
+    void sleep(const Model& m, State& s);
 
     template <class F>
     void for_each_colour(ThreadPool& pool, F&& fn);
@@ -105,6 +131,8 @@ class ContactStage {
     std::vector<int> colour_of_, colour_start_, point_start_, cursor_;
     std::vector<std::uint64_t> colour_bits_;
     int colour_count_ = 0;
+    SolverContext ctx_; // the substep and the soft contact's coefficients
+    int substeps_ = 1;
 
     // Bodies the substeps touch.
     std::vector<int> constrained_, sleeping_;

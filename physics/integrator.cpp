@@ -1,28 +1,61 @@
+// The registry of the named integrators (integrator.h): one row per integrator.
 #include "physics/integrator.h"
 
+#include <cstddef>
+
 namespace tumble::physics {
+
+// The integrators' functions, one per file integrator_<name>.cpp; only their rows call them.
+void integrate_euler(const Model&, State&, double, std::span<const int>);
+void integrate_euler_momentum(const Model&, State&, double, std::span<const int>);
+void integrate_symplectic_euler(const Model&, State&, double, std::span<const int>);
+void integrate_implicit_gyro(const Model&, State&, double, std::span<const int>);
+void integrate_rk4(const Model&, State&, double, std::span<const int>);
+void integrate_splitting(const Model&, State&, double, std::span<const int>);
+void integrate_midpoint(const Model&, State&, double, std::span<const int>);
+void integrate_splitting4(const Model&, State&, double, std::span<const int>);
+
 namespace {
 
 // Ordered from the teaching baseline to the most accurate; docs/integrators.md has the measured
 // order, cost and conservation of each.
 constexpr IntegratorInfo kIntegrators[] = {
-    {Integrator::Euler, "euler", 1,
-     "explicit Euler on (x, v, R, w), R re-orthonormalised: the course loop; loses energy"},
-    {Integrator::EulerMomentum, "euler_momentum", 1,
-     "explicit Euler on (x, P, q, L), q renormalised: L exact without torque, orientation drifts"},
-    {Integrator::SymplecticEuler, "symplectic_euler", 1,
-     "semi-implicit Euler, q by the exponential map, explicit gyroscopic term; gains energy"},
+    {Integrator::Euler, "euler", 1, "nothing; R stays a rotation only by re-orthonormalisation",
+     "explicit Euler on (x, v, R, w), R re-orthonormalised: the course loop; loses energy",
+     integrate_euler},
+    {Integrator::EulerMomentum, "euler_momentum", 1, "world L exactly without torque",
+     "explicit Euler on (x, P, q, L), q renormalised: L exact without torque, orientation drifts",
+     integrate_euler_momentum},
+    {Integrator::SymplecticEuler, "symplectic_euler", 1, "an isotropic torque-free body exactly",
+     "semi-implicit Euler, q by the exponential map, explicit gyroscopic term; gains energy",
+     integrate_symplectic_euler},
     {Integrator::ImplicitGyro, "implicit_gyro", 1,
-     "semi-implicit Euler, backward Euler gyroscopic term (one Newton step); damps tumbling"},
-    {Integrator::Rk4, "rk4", 4,
-     "classic Runge-Kutta on (x, v, q, w) with the gyroscopic term, q renormalised each step"},
+     "energy never rises while h|w| <= I_min / (I_max - I_min)",
+     "semi-implicit Euler, backward Euler gyroscopic term (one Newton step); damps tumbling",
+     integrate_implicit_gyro},
+    {Integrator::Rk4, "rk4", 4, "nothing exactly (energy and L drift as O(h^4))",
+     "classic Runge-Kutta on (x, v, q, w) with the gyroscopic term, q renormalised each step",
+     integrate_rk4},
     {Integrator::Splitting, "splitting", 2,
-     "symplectic Lie-Poisson splitting, exact rotations, half kicks: L exact, bounded energy"},
-    {Integrator::Midpoint, "midpoint", 2,
-     "implicit midpoint on (R, L_body), Newton 3x3: energy and L exact, phase error only"},
+     "world L to round-off; energy error bounded, no drift (symplectic)",
+     "symplectic Lie-Poisson splitting, exact rotations, half kicks: L exact, bounded energy",
+     integrate_splitting},
+    {Integrator::Midpoint, "midpoint", 2, "energy and world L (every quadratic invariant)",
+     "implicit midpoint on (R, L_body), Newton 3x3: energy and L exact, phase error only",
+     integrate_midpoint},
     {Integrator::Splitting4, "splitting4", 4,
-     "fourth-order composition (Suzuki, five substeps) of splitting: L exact, bounded energy"},
+     "as splitting: world L to round-off; energy error bounded, no drift",
+     "fourth-order composition (Suzuki, five substeps) of splitting: L exact, bounded energy",
+     integrate_splitting4},
 };
+
+// The handles index the table: one row per enumerator, in order.
+constexpr bool rows_follow_handles() {
+    for (std::size_t k = 0; k < std::size(kIntegrators); ++k)
+        if (kIntegrators[k].id != static_cast<Integrator>(k)) return false;
+    return std::size(kIntegrators) == static_cast<std::size_t>(Integrator::Count);
+}
+static_assert(rows_follow_handles(), "kIntegrators needs one row per Integrator, in enum order");
 
 } // namespace
 
@@ -31,9 +64,7 @@ std::span<const IntegratorInfo> integrators() {
 }
 
 const IntegratorInfo& integrator_info(Integrator id) {
-    for (const IntegratorInfo& info : kIntegrators)
-        if (info.id == id) return info;
-    return kIntegrators[0]; // unreachable: every enumerator has a row
+    return kIntegrators[static_cast<std::size_t>(id)];
 }
 
 std::optional<Integrator> integrator_from_name(std::string_view name) {

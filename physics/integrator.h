@@ -1,7 +1,12 @@
 #pragma once
-// The named integrators a scene (or --integrator) can choose. Each lives in its own file,
-// integrator_<name>.cpp, which opens with the update it performs, its order, what it conserves
-// and how it is known to fail.
+// The named integrators a scene (or --integrator) can choose, and their registry.
+//
+// Each integrator is one file plus one row. Its file, integrator_<name>.cpp, opens with the update
+// it performs, its order, what it conserves and how it is known to fail, and defines one
+// IntegrateFn. Its row of the registry (kIntegrators in integrator.cpp) gives its handle, name,
+// order, what it conserves, a summary and that function. Everything else is read from the table:
+// step() calls the row's function, and the command line, `tumble explain`, the study, the tests
+// and the benchmarks list the rows.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -10,6 +15,18 @@
 
 namespace tumble::physics {
 
+struct Model;
+struct State;
+
+// Advances the dynamic bodies listed in `bodies` by one step h under the loads of forces.h, each
+// body's update reading and writing only that body's state (so a list may be split between
+// threads). step() makes one call per step or substep over the whole list: the per-body loops are
+// inside the integrator, with no virtual call per body.
+using IntegrateFn = void (*)(const Model& model, State& state, double h,
+                             std::span<const int> bodies);
+
+// The handle of a row of the registry: one enumerator per row, in the table's order (integrator.cpp
+// checks both at compile time).
 enum class Integrator : std::uint8_t {
     Euler,
     EulerMomentum,
@@ -19,13 +36,16 @@ enum class Integrator : std::uint8_t {
     Splitting,
     Midpoint,
     Splitting4,
+    Count // not an integrator: the number of rows
 };
 
 struct IntegratorInfo {
     Integrator id;
-    std::string_view name;    // as written in scene files and on the command line
-    int order;                // order of accuracy its theory gives on the rotation
-    std::string_view summary; // one line for `tumble explain` and --help
+    std::string_view name;      // as written in scene files and on the command line
+    int order;                  // order of accuracy its theory gives on the rotation
+    std::string_view conserves; // what it keeps exactly or bounded (docs/integrators.md)
+    std::string_view summary;   // one line for `tumble explain` and --help
+    IntegrateFn integrate;      // defined in integrator_<name>.cpp
 };
 
 std::span<const IntegratorInfo> integrators();

@@ -21,8 +21,9 @@
 // A teaching baseline, not a method to use.
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 
 namespace tumble::physics {
 namespace {

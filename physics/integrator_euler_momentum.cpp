@@ -17,8 +17,9 @@
 // an "L is conserved" test while being wrong (references.md section 2.2).
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 
 namespace tumble::physics {
 

@@ -26,8 +26,9 @@
 // "the implicit integrator dampens the coriolis/gyroscopic effect").
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 
 #include <Eigen/LU>
 

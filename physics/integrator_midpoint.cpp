@@ -29,8 +29,9 @@
 // only for the statistics of long runs with torques.
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 #include "physics/step.h"
 
 #include <Eigen/LU>

@@ -17,8 +17,9 @@
 // imaginary axis) the rotation blows up; the divergence check then stops the run.
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 
 namespace tumble::physics {
 namespace {

@@ -31,9 +31,10 @@
 // ... but are not as good at long-term accuracy"). Constant loads are exact for the translation.
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
 #include "physics/splitting.h"
+#include "physics/state.h"
 
 #include <cmath>
 

@@ -15,9 +15,10 @@
 // Known failure: five times the cost of `splitting`, so it only pays when the error wanted is
 // small (below about 1e-6 rad per second at h |w| < 0.1); round-off of the five substeps puts its
 // floor near 1e-11.
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/passes.h"
 #include "physics/splitting.h"
+#include "physics/state.h"
 
 namespace tumble::physics {
 

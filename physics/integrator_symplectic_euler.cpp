@@ -17,8 +17,9 @@
 // MuJoCo's Euler, the same scheme, gains 9 % energy in 5 s on its test box (references.md 2.1).
 #include "physics/compensated.h"
 #include "physics/forces.h"
-#include "physics/integrators.h"
+#include "physics/model.h"
 #include "physics/rigid_body.h"
+#include "physics/state.h"
 
 namespace tumble::physics {
 

@@ -1,6 +1,7 @@
 #pragma once
-// Model: what the scene *is* (MuJoCo's mjModel). Built once by build_model(), read-only while
-// stepping. Bodies are integer handles 0..body_count()-1 into flat arrays (Box2D's ids).
+// Model: what the scene *is* (MuJoCo's mjModel). Built once by build_model() (force_all_passes()
+// in passes.h may then turn every pass on), read-only while stepping. Bodies are integer handles
+// 0..body_count()-1 into flat arrays (Box2D's ids).
 //
 // Each dynamic body is simulated in its *mass frame*: origin at the centre of mass, axes along
 // the principal axes of inertia. There the inertia is diagonal, I_body = diag(I1, I2, I3), and the
@@ -61,7 +62,7 @@ struct Model {
     ContactSettings contact;
     TouchReport touch; // why passes.contacts is on or off (can_touch.h)
 
-    // Dynamic bodies only: the loops of the integrators run over this list.
+    // Dynamic bodies only: the integrators and the contact stage loop over this list.
     std::vector<int> dynamic_bodies;
 
     Passes passes;

@@ -1,12 +1,16 @@
 // One step of the simulation, assembled from what the scene contains (Model::passes).
 //
+// The named integrator is the function in its row of the registry (integrator.h), called once per
+// step or substep over the whole list of bodies.
+//
 // A scene whose shapes can never touch (can_touch.h: one body, none dynamic, or bodies whose free
 // flight keeps them apart) runs only the named integrator over the step h, then the finite check.
 // Nothing else is built or run: no broad phase, no buffers, no threads ("model only what a scene
 // requires"; `tumble explain` says which).
 //
 // A scene with contacts runs the contact stage (contact_stage.h), which wraps the integrator in
-// the soft step of Box2D v3 (Catto, "Solver2D", 2024):
+// the soft step of Box2D v3 (Catto, "Solver2D", 2024). ContactStage::step (contact_stage.cpp) is
+// this list, and each stage lives in the file named after it:
 //
 //   1. find     poses and bounding boxes grown by the distance each body can move in h; uniform-
 //               grid broad phase (broadphase.h); narrow phase (collide.h) with speculative
@@ -14,14 +18,20 @@
 //               can meet within the step is a contact now: nothing tunnels through anything as
 //               long as it moves less than its own size in a step (a speed-aware bound, not a
 //               swept time-of-impact search; a 50 m/s ball against a 1 cm wall is a test).
-//               Points keep feature ids, and last step's impulses carry over to the same ids.
-//   2. wake     an awake body touching a sleeping one wakes the sleeper's island (sleep.cpp).
-//   3. prepare  anchors, effective masses, tangents; graph colouring (no colour holds two
-//               constraints on one moving body) fixes the solve order.
+//               Points keep feature ids, and last step's impulses carry over to the same ids
+//               (contact_find.cpp).
+//   2. wake     an awake body touching a sleeping one wakes the sleeper's island
+//               (contact_wake.cpp).
+//   3. prepare  mass properties and loads at the start of the step; graph colouring (no colour
+//               holds two constraints on one moving body) fixes the solve order; anchors,
+//               effective masses, tangents; the substep's soft-contact coefficients
+//               (contact_prepare.cpp).
 //   4. impacts  restitution: approaching points that close within the step get pairwise
 //               Newton collisions, swept until no impact is left, energy-consistent with the bounce
-//               happening inside the step (contact_impacts.cpp).
-//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n:
+//               happening inside the step; an isolated bounce is moved to its moment of contact
+//               once the substeps are done (contact_impacts.cpp).
+//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n
+//               (contact_substeps.cpp):
 //        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact
 //        b. solve      warm start, then one Gauss-Seidel sweep: soft non-penetration (pushes
 //                      overlap out as a stiff damped spring), Coulomb friction with two
@@ -30,7 +40,13 @@
 //                      term, free flight); bodies in contact then move by x += h' v_solved
 //        d. relax      one more sweep without the push-out bias, so position correction never
 //                      becomes kinetic energy
-//   6. store    impulses into the State (warm start of the next step); sleeping (sleep.cpp).
+//   6. store    impulses into this step's contacts, which become the State's contact cache (the
+//               warm start of the next step; contact_store.cpp).
+//   7. sleep    islands slow for long enough fall asleep (contact_sleep.cpp).
+//
+// With no constraint to solve (every contact between bodies that cannot move, or none), 4 and 5
+// are replaced by the integrator over the whole step h for every awake body (free flight, in
+// contact_substeps.cpp): the same bits as a scene without contacts.
 //
 // How contacts meet the integrators (5a-5c). The solver computes impulses from predicted
 // velocities v + h' F/m, the velocities the step would end with, and the integrator then adds the
@@ -44,15 +60,16 @@
 // the constraints were solved for, and resting stays resting with every integrator.
 //
 // Sleeping bodies are skipped: the integrator still visits them (its interface steps every
-// dynamic body), and their pose is restored after it; they are never solved.
+// dynamic body), and their pose is restored after it, with v = w = 0; they are never solved.
 //
-// Threads (step(model, state, workspace) with a workspace of 2 or more): the broad and narrow
-// phases, preparation and each colour of each sweep are split into fixed ranges per worker;
-// every worker writes only its own outputs, so states are bit-identical for any thread count.
-// The integrator call is serial.
+// Threads (step(model, state, workspace) with a workspace of 2 or more, from
+// world.parallel_min_bodies dynamic bodies on): the broad and narrow phases, preparation, each
+// colour of each sweep and the integrator calls are split into fixed ranges per worker; every
+// worker writes only its own outputs (an integrator updates each body from that body's state
+// alone), so states are bit-identical for any thread count.
 #include "physics/step.h"
 
-#include "physics/integrators.h"
+#include "physics/integrator.h"
 
 namespace tumble::physics {
 
@@ -74,36 +91,6 @@ void check_finite(const Model& m, const State& s) {
 
 namespace {
 
-// The named integrator over one step or substep h (a switch per call, no virtual call per body).
-void integrate(const Model& m, State& s, double h, std::span<const int> bodies) {
-    switch (m.integrator) {
-    case Integrator::Euler:
-        integrate_euler(m, s, h, bodies);
-        break;
-    case Integrator::EulerMomentum:
-        integrate_euler_momentum(m, s, h, bodies);
-        break;
-    case Integrator::SymplecticEuler:
-        integrate_symplectic_euler(m, s, h, bodies);
-        break;
-    case Integrator::ImplicitGyro:
-        integrate_implicit_gyro(m, s, h, bodies);
-        break;
-    case Integrator::Rk4:
-        integrate_rk4(m, s, h, bodies);
-        break;
-    case Integrator::Splitting:
-        integrate_splitting(m, s, h, bodies);
-        break;
-    case Integrator::Midpoint:
-        integrate_midpoint(m, s, h, bodies);
-        break;
-    case Integrator::Splitting4:
-        integrate_splitting4(m, s, h, bodies);
-        break;
-    }
-}
-
 StepWorkspace& thread_workspace() {
     thread_local StepWorkspace workspace(1);
     return workspace;
@@ -118,6 +105,8 @@ void step(const Model& m, State& s) {
 }
 
 void step(const Model& m, State& s, StepWorkspace& workspace) {
+    // The named integrator: its row of the registry (integrator.h), one call per step or substep.
+    const IntegrateFn integrate = integrator_info(m.integrator).integrate;
     if (m.passes.contacts)
         workspace.contacts.step(m, s, integrate, workspace.pool);
     else

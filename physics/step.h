@@ -1,8 +1,9 @@
 #pragma once
 // One step of the simulation pipeline, assembled from what the model contains (step.cpp tells
 // the whole story):
-//   1. contacts   only when two shapes can touch: find, impacts, then substeps of
-//                 (solve, integrate, relax) around the named integrator (contact_stage.h)
+//   1. contacts   only when two shapes can touch: find, wake, prepare, impacts, substeps of
+//                 (predict, solve, integrate, relax) around the named integrator, store, sleep
+//                 (contact_stage.h)
 //      integrate  otherwise the model's named integrator moves every dynamic body by h = dt
 //   2. check      every dynamic body's state is finite, or the run stops here
 #include "physics/contact_stage.h"
