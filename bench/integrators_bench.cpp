@@ -2,7 +2,7 @@
 // saves. Run with repetitions and keep the CSV (scripts/bench-integrators.sh does both):
 //
 //   books/<integrator>            1000 torque-free books tumbling near their middle axis (the body
-//                                 of exact::intermediate_axis_scene): each integrator's full work.
+//                                 of scenes::intermediate_axis_scene): each integrator's full work.
 //                                 Counters: ns_per_body_step, and the accuracy of one run of the
 //                                 intermediate-axis scene at h = 1/240 s over 10 s against the
 //                                 exact solution (computed once, not timed): energy_err
@@ -25,9 +25,9 @@
 #include "physics/build.h"
 #include "physics/diagnostics.h"
 #include "physics/exact/body_motion.h"
-#include "physics/exact/reference_scenes.h"
 #include "physics/integrator.h"
 #include "physics/passes.h"
+#include "physics/scenes/reference_scenes.h"
 #include "physics/step.h"
 
 #include <benchmark/benchmark.h>
@@ -51,7 +51,7 @@ struct World {
     State state;
 };
 
-World build(const exact::ReferenceScene& scene, Integrator integrator, double h) {
+World build(const scenes::Scene& scene, Integrator integrator, double h) {
     WorldDef w = scene.world;
     w.integrator = integrator;
     w.dt = h;
@@ -61,9 +61,9 @@ World build(const exact::ReferenceScene& scene, Integrator integrator, double h)
 }
 
 // 1000 copies of the intermediate-axis book, each with a slightly different spin and orientation.
-exact::ReferenceScene books() {
-    const exact::ReferenceScene one = exact::intermediate_axis_scene();
-    exact::ReferenceScene scene = one;
+scenes::Scene books() {
+    const scenes::Scene one = scenes::intermediate_axis_scene();
+    scenes::Scene scene = one;
     scene.bodies.clear();
     for (int i = 0; i < kBodies; ++i) {
         BodyDef b = one.bodies[0];
@@ -99,7 +99,7 @@ struct Accuracy {
 // The intermediate-axis scene at the default step 1/240 s for 10 s (2.7 flips), against the
 // exact Jacobi solution.
 Accuracy accuracy(Integrator integrator) {
-    World w = build(exact::intermediate_axis_scene(), integrator, 1.0 / 240.0);
+    World w = build(scenes::intermediate_axis_scene(), integrator, 1.0 / 240.0);
     const exact::ExactBodyMotion exact_motion(w.model, w.state, 0);
     const Diagnostics d0 = diagnose(w.model, w.state);
     Accuracy a;
@@ -124,7 +124,7 @@ void bench_books(benchmark::State& bench, Integrator integrator) {
 }
 
 void bench_spheres(benchmark::State& bench, Integrator integrator, bool full) {
-    World w = build(exact::torque_free_spheres(kBodies), integrator, 1.0 / 240.0);
+    World w = build(scenes::torque_free_spheres(kBodies), integrator, 1.0 / 240.0);
     if (full) force_all_passes(w.model);
     time_steps(bench, w);
 }

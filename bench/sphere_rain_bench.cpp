@@ -1,4 +1,4 @@
-// The sphere-rain benchmark of issue 4 (scene: bench/sphere_rain.h). Run with
+// The sphere-rain benchmark of issue 4 (scene: physics/scenes/sphere_rain.h). Run with
 // scripts/bench-sphere-rain.sh, which keeps the CSV under bench/results/<machine>/:
 //
 //   rain/<N>/shifted/threads:1   the benchmark: N = 1000 and 8000 spheres, the whole 5 s
@@ -7,7 +7,7 @@
 //                                the single-threaded run (hash compared, reported as identical)
 //   rain/<N>/columns/threads:1   the unshifted scene: the spheres stack in columns
 //   free_flight/assembled        issue 4's "a scene with no contacts runs none of it": the two
-//   free_flight/contacts_forced  bodies of exact::gravity_spin_scene (cannot touch, so no contact
+//   free_flight/contacts_forced  bodies of scenes::gravity_spin_scene (cannot touch, so no contact
 //                                stage) against the same scene with the stage forced on
 //
 // Each repetition builds the scene (not timed) and times every step of the run: one thread by
@@ -18,8 +18,9 @@
 // per substep), and at the end: contacts (points), manifolds, max_penetration_mm, kinetic_energy_J,
 // outside (spheres outside the box or below the floor). The summary gives the medians, the 2-core
 // speed-up and the targets of the issue, each ratio from this run.
-#include "bench/sphere_rain.h"
-#include "physics/exact/reference_scenes.h"
+#include "physics/scenes/reference_scenes.h"
+#include "physics/scenes/sphere_rain.h"
+#include "physics/scenes/state_hash.h"
 #include "physics/step.h"
 
 #include <benchmark/benchmark.h>
@@ -37,6 +38,8 @@ namespace {
 using physics::Model;
 using physics::State;
 using physics::StepWorkspace;
+using scenes::RainEnd;
+using scenes::state_hash;
 
 constexpr int kRainSteps = 1200; // 5 s at 1/240 s
 
@@ -53,7 +56,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
     std::uint64_t hash = 0;
     for (auto _ : bench) {
         bench.PauseTiming();
-        const RainScene scene = sphere_rain(n, shifted);
+        const scenes::Scene scene = scenes::sphere_rain(n, shifted);
         const Model model = build_model(scene.world, scene.bodies);
         State state = initial_state(model, scene.bodies);
         bench.ResumeTiming();
@@ -70,7 +73,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
         bench.PauseTiming();
         body_steps += static_cast<double>(kRainSteps) * count;
         last = ws.contacts.stats();
-        end = judge_rain(scene, state);
+        end = scenes::judge_rain(state);
         hash = state_hash(state);
         bench.ResumeTiming();
     }
@@ -102,7 +105,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
 }
 
 void bench_free_flight(benchmark::State& bench, bool forced) {
-    const exact::ReferenceScene scene = exact::gravity_spin_scene();
+    const scenes::Scene scene = scenes::gravity_spin_scene();
     Model model = build_model(scene.world, scene.bodies);
     if (model.passes.contacts) bench.SkipWithError(("can touch: " + model.touch.why).c_str());
     model.passes.contacts = forced;

@@ -146,7 +146,7 @@ def newtons_cradle():
 
 
 def rain_hash(i, k):
-    """Issue 4's 32-bit hash, u(i, k) in [-1, 1) (bench/sphere_rain.h has the same)."""
+    """Issue 4's 32-bit hash, u(i, k) in [-1, 1) (physics/scenes/sphere_rain.cpp has the same)."""
     m = 0xFFFFFFFF
     h = (i * 2654435761 + k * 0x9E3779B9) & m
     h ^= h >> 16
@@ -158,7 +158,7 @@ def rain_hash(i, k):
 
 
 def sphere_rain(shifted, n=10):
-    """Issue 4's benchmark scene; bench/sphere_rain.h builds the same in C++ (a test compares)."""
+    """Issue 4's benchmark scene; physics/scenes/sphere_rain.cpp builds it too (a test compares)."""
     bodies = [{"name": "floor", "shape": {"type": "plane", "extent": 14}, "color": "#d2d0c8",
                "material": {"preset": "matte", "friction": 0.5}}]
     t = 0.05  # half thickness of a wall; inner faces on x, y = +-2

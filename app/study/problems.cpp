@@ -2,9 +2,11 @@
 // a horizon T, where its reference motion comes from and the step grids of the full and the quick
 // study. Bodies with no closed-form motion (torques on a tumbling body) use a converged run of the
 // registry's highest-order integrator at a much smaller step as their reference; the contact
-// problems (a bouncing ball, a resting stack) have closed forms of their own.
+// problems (a bouncing ball, a resting stack) have closed forms of their own. The scenes shared
+// with the tests and benchmarks come from physics/scenes.
 #include "app/study/study.h"
-#include "physics/exact/reference_scenes.h"
+#include "physics/scenes/contact_scenes.h"
+#include "physics/scenes/reference_scenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,9 +30,7 @@ WorldDef no_gravity() {
 // The default scene's book (box 0.22 x 0.05 x 0.30 m, 0.8 kg): moments (6.17e-3, 9.23e-3,
 // 3.39e-3) kg m^2, so y is the largest axis, x the middle one and z the smallest.
 BodyDef book(const Vec3& w) {
-    BodyDef b;
-    b.shape = Shape::box(Vec3(0.11, 0.025, 0.15));
-    b.mass = 0.8;
+    BodyDef b = scenes::book();
     b.angular_velocity = w;
     return b;
 }
@@ -52,27 +52,11 @@ Quat tilted(double angle, const Vec3& axis) {
 }
 
 // Contact problems. A ball (r = 0.1 m, 1 kg) dropped from rest with its bottom h0 = 1 m above a
-// plane, restitution e = 0.8. Exact motion: free fall between bounces, and at an impact with speed
-// V the ball leaves at e V (Newton), so the apexes are e^(2k) h0. In T = 2 s it lands at 0.452,
-// 1.174 and 1.752 s, at 4.43, 3.54 and 2.83 m/s, far above the 0.5 m/s restitution threshold;
-// no spin, no sliding (a vertical impact has no tangential velocity).
-constexpr double kBallRadius = 0.1, kDrop = 1.0, kBounce = 0.8, kG = 9.81;
-
-BodyDef ground() {
-    BodyDef g;
-    g.shape = Shape::plane();
-    g.motion = physics::Motion::Static;
-    return g;
-}
-
-std::vector<BodyDef> bouncing_ball() {
-    BodyDef ball;
-    ball.shape = Shape::sphere(kBallRadius);
-    ball.mass = 1.0;
-    ball.position = Vec3(0.0, 0.0, kBallRadius + kDrop);
-    ball.material.restitution = kBounce;
-    return {ground(), ball};
-}
+// plane, restitution e = 0.8 (scenes::ball_drop). Exact motion: free fall between bounces, and at
+// an impact with speed V the ball leaves at e V (Newton), so the apexes are e^(2k) h0. In T = 2 s
+// it lands at 0.452, 1.174 and 1.752 s, at 4.43, 3.54 and 2.83 m/s, far above the 0.5 m/s
+// restitution threshold; no spin, no sliding (a vertical impact has no tangential velocity).
+constexpr double kBallRadius = scenes::kDropBallRadius, kDrop = 1.0, kBounce = 0.8, kG = 9.81;
 
 // Walks the flights: from height z0 with upward speed u the ball lands after
 // tau = (u + V) / g with V = sqrt(u^2 + 2 g (z0 - r)), and leaves again at e V.
@@ -90,29 +74,9 @@ void bouncing_ball_motion(double t, const physics::Model& m, physics::State& s) 
     s.v[ball] = Vec3(0.0, 0.0, u - kG * dt);
 }
 
-// Three 0.4 m cubes of 1 kg stacked on a plane, exactly touching, sleeping off: the exact motion
-// is none, so every error is drift (the soft contacts' sag, creep, jitter).
-physics::WorldDef stack_world() {
-    WorldDef w;
-    w.contact.sleeping = false;
-    return w;
-}
-
-std::vector<BodyDef> box_stack() {
-    std::vector<BodyDef> bodies{ground()};
-    for (int i = 0; i < 3; ++i) {
-        BodyDef b;
-        b.shape = Shape::box(Vec3(0.2, 0.2, 0.2));
-        b.mass = 1.0;
-        b.position = Vec3(0.0, 0.0, 0.2 + 0.4 * i);
-        bodies.push_back(b);
-    }
-    return bodies;
-}
-
 std::vector<Problem> make_problems() {
     std::vector<Problem> p;
-    const exact::ReferenceScene flip = exact::intermediate_axis_scene();
+    const scenes::Scene flip = scenes::intermediate_axis_scene();
     p.push_back({"intermediate-axis",
                  "the book spun at 6 rad/s about its middle axis (0.05 rad/s wobble): it turns "
                  "over (Dzhanibekov flip) at t = 2.07 s",
@@ -148,7 +112,7 @@ std::vector<Problem> make_problems() {
                                              Vec3(20.0, 1.0, 0.5))};
          },
          2.0, ReferenceKind::Exact, 16, StepRange{0.02, 1e-5, 5}, StepRange{0.02, 2e-4, 2}});
-    const exact::ReferenceScene thrown = exact::gravity_spin_scene();
+    const scenes::Scene thrown = scenes::gravity_spin_scene();
     p.push_back({"projectile-spin",
                  "under gravity: the book thrown up turning about its largest axis, and a ball "
                  "spun up by a torque parallel to its spin",
@@ -167,11 +131,13 @@ std::vector<Problem> make_problems() {
                  },
                  1.5, ReferenceKind::ConvergedRun, 16, StepRange{0.03, 1e-5, 5},
                  StepRange{0.03, 3e-4, 2}});
+    // The contact scenes take a step; the default one, since every run sets its own.
+    const scenes::Scene drop = scenes::ball_drop(kBounce, kDrop, WorldDef{}.dt);
     Problem ball{"bouncing-ball",
                  "contacts: a ball dropped 1 m on a plane with restitution 0.8, three bounces "
                  "(closed form: free fall, impacts leaving at e V)",
-                 [] { return WorldDef{}; },
-                 bouncing_ball,
+                 [drop] { return drop.world; },
+                 [drop] { return drop.bodies; },
                  2.0,
                  ReferenceKind::Analytic,
                  16,
@@ -180,11 +146,14 @@ std::vector<Problem> make_problems() {
     ball.analytic = bouncing_ball_motion;
     ball.contacts = true;
     p.push_back(ball);
+    // Three 0.4 m cubes of 1 kg stacked on a plane, exactly touching, sleeping off: the exact
+    // motion is none, so every error is drift (the soft contacts' sag, creep, jitter).
+    const scenes::Scene cubes = scenes::box_stack(3, 0.4, WorldDef{}.dt);
     Problem stack{"box-stack",
                   "contacts: three 0.4 m cubes resting in a stack on a plane, sleeping off "
                   "(exact motion: none; the error is drift)",
-                  stack_world,
-                  box_stack,
+                  [cubes] { return cubes.world; },
+                  [cubes] { return cubes.bodies; },
                   2.0,
                   ReferenceKind::Analytic,
                   16,

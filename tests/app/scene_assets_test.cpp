@@ -1,14 +1,15 @@
 // The built-in scenes and meshes: every file in assets/scenes/ loads (from disk and embedded),
-// starts with no body deep inside another, and the sphere-rain scenes are exactly the benchmark's
-// builder (bench/sphere_rain.h); mesh files resolve next to the scene first, then among the
-// bundled meshes; capsules and meshes are drawn as their shapes.
+// starts with no body deep inside another, and the sphere-rain scenes are exactly the scene
+// built in code that the benchmark and the determinism test run (physics/scenes/sphere_rain.h);
+// mesh files resolve next to the scene first, then among the bundled meshes; capsules and meshes
+// are drawn as their shapes.
 #include "app/cli_runner.h"
 #include "app/run/simulation.h"
 #include "app/scene/scene.h"
 #include "app/scene/scene_error.h"
 #include "app/view/view_builder.h"
-#include "bench/sphere_rain.h"
 #include "measured.h"
+#include "physics/scenes/sphere_rain.h"
 
 #include <gtest/gtest.h>
 
@@ -49,12 +50,12 @@ TEST(SceneAssets, EveryFileLoadsFromDiskAndEmbeddedWithoutWarnings) {
     EXPECT_GE(count, 9); // default + the scenes of issue 4 (sphere rain twice: shifted, not)
 }
 
-void expect_same_scene(const Scene& json, const bench::RainScene& code) {
+void expect_same_scene(const Scene& json, const scenes::Scene& code) {
     ASSERT_EQ(json.bodies.size(), code.bodies.size());
     EXPECT_EQ(json.world.dt, code.world.dt);
     EXPECT_EQ(json.world.gravity, code.world.gravity);
     EXPECT_EQ(json.world.contact.sleeping, code.world.contact.sleeping);
-    EXPECT_EQ(json.duration, 5.0);
+    EXPECT_EQ(json.duration, code.duration);
     int differing = 0;
     for (std::size_t i = 0; i < code.bodies.size(); ++i) {
         const physics::BodyDef &a = json.bodies[i], &b = code.bodies[i];
@@ -73,10 +74,10 @@ void expect_same_scene(const Scene& json, const bench::RainScene& code) {
     TUMBLE_MEASURED(differing, 0);
 }
 
-TEST(SceneAssets, SphereRainIsExactlyTheBenchmarkBuildersScene) {
-    expect_same_scene(load_file(scenes_dir() / "sphere_rain.json"), bench::sphere_rain(10, true));
+TEST(SceneAssets, SphereRainIsExactlyTheSceneBuiltInCode) {
+    expect_same_scene(load_file(scenes_dir() / "sphere_rain.json"), scenes::sphere_rain(10, true));
     expect_same_scene(load_file(scenes_dir() / "sphere_columns.json"),
-                      bench::sphere_rain(10, false));
+                      scenes::sphere_rain(10, false));
 }
 
 TEST(SceneAssets, MeshFilesResolveBesideTheSceneFirstThenAmongTheBundledOnes) {

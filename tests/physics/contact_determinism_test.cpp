@@ -2,13 +2,15 @@
 // State continues bit-identically, two threads give the single-threaded bits, and the final state
 // is pinned by a hash (Box2D's test_determinism habit), so that any change to the results is
 // seen and made on purpose.
-#include "bench/sphere_rain.h"
 #include "measured.h"
+#include "physics/scenes/sphere_rain.h"
+#include "physics/scenes/state_hash.h"
 #include "physics/step.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 namespace tumble::physics {
@@ -16,13 +18,13 @@ namespace {
 
 constexpr int kSteps = 300; // 1.25 s: the spheres land, collide and roll
 
-using bench::state_hash;
+using scenes::state_hash;
 
 struct Rain {
     Model model;
     State state;
     Rain() {
-        const bench::RainScene scene = bench::sphere_rain(10);
+        const scenes::Scene scene = scenes::sphere_rain(10);
         model = build_model(scene.world, scene.bodies);
         state = initial_state(model, scene.bodies);
     }

@@ -1,9 +1,11 @@
 // A passive contact never adds energy: a spinning top (a convex mesh with a 1.5 mm flat tip, as
 // assets/meshes/top.obj) on a plane with friction, upright and tilted, at h, 2h and 4h. The total
 // energy T + V may only fall; its highest value over the run is compared with the start.
-#include "contact_scenes.h"
 #include "measured.h"
 #include "physics/diagnostics.h"
+#include "physics/scenes/ground.h"
+#include "physics/scenes/scene.h"
+#include "scene_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +17,7 @@
 namespace tumble::physics {
 namespace {
 
-using test::Scene;
+using scenes::Scene;
 using test::Sim;
 
 constexpr double kH = 1.0 / 240.0;
@@ -64,7 +66,7 @@ Scene spinning_top(double tilt_deg, double dt) {
     top.position = Vec3(0, 0, 0.0003);
     top.angular_velocity = top.orientation * Vec3(0, 0, 75.0);
     top.material.friction = 0.3;
-    s.bodies = {test::ground(0.3), top};
+    s.bodies = {scenes::ground(0.3), top};
     return s;
 }
 

@@ -8,8 +8,10 @@
 //     out (sink 0.26 m at 1000 : 1, 20 m at 1e6 : 1, the same at h and 4h). Not a supported
 //     configuration: docs/contacts.md says so. The test pins the sag law up to 100 : 1, where the
 //     pair also walks sideways by up to 17 mm in 2 s.
-#include "contact_scenes.h"
 #include "measured.h"
+#include "physics/scenes/ground.h"
+#include "physics/scenes/scene.h"
+#include "scene_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -19,8 +21,8 @@
 namespace tumble::physics {
 namespace {
 
-using test::ground;
-using test::Scene;
+using scenes::ground;
+using scenes::Scene;
 using test::Sim;
 
 BodyDef cube(double half, double mass, double z) {

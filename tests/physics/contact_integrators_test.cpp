@@ -1,12 +1,16 @@
 // The contact stage works with every named integrator: the test scenes run without exploding and
 // keep their physics (a ball bounces to its apex, a box sticks on a ramp, a tower stands); and a
 // contact scene whose bodies never touch steps exactly as the integrator alone would.
-#include "contact_scenes.h"
 #include "measured.h"
+#include "physics/scenes/contact_scenes.h"
+#include "scene_sim.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <numbers>
 
 namespace tumble::physics {
 namespace {
@@ -16,7 +20,7 @@ using test::Sim;
 TEST(ContactIntegrators, EveryIntegratorBouncesHoldsAndStacks) {
     for (const IntegratorInfo& info : integrators()) {
         SCOPED_TRACE(std::string(info.name));
-        test::Scene ball = test::ball_drop(0.8, 1.0, 1.0 / 240.0);
+        scenes::Scene ball = scenes::ball_drop(0.8, 1.0, 1.0 / 240.0);
         ball.world.integrator = info.id;
         Sim b(ball);
         double apex = 0.0;
@@ -29,14 +33,15 @@ TEST(ContactIntegrators, EveryIntegratorBouncesHoldsAndStacks) {
         }
         const double apex_error = std::abs(apex / 0.64 - 1.0);
 
-        test::Scene ramp = test::incline(20.0 * std::numbers::pi / 180.0, 0.5, 1.0 / 240.0, false);
+        scenes::Scene ramp =
+            scenes::incline(20.0 * std::numbers::pi / 180.0, 0.5, 1.0 / 240.0, false);
         ramp.world.integrator = info.id;
         Sim r(ramp);
         const Vec3 start = r.state.x[1];
         r.steps(r.steps_for(3.0));
         const double creep = (r.state.x[1] - start).norm();
 
-        test::Scene stack = test::tower(5, 1.0 / 240.0);
+        scenes::Scene stack = scenes::box_stack(5, 0.5, 1.0 / 240.0);
         stack.world.integrator = info.id;
         Sim t(stack);
         const Vec3 top = t.state.x[5];

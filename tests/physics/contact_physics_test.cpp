@@ -1,10 +1,15 @@
 // Contacts against exact physics, each at h, 2h and 4h (h = 1/240 s), measured values printed
 // beside their bounds.
-#include "contact_scenes.h"
 #include "measured.h"
 #include "physics/diagnostics.h"
+#include "physics/scenes/contact_scenes.h"
+#include "scene_sim.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace tumble::physics {
 namespace {
@@ -21,7 +26,7 @@ const double kSteps[] = {kH, 2 * kH, 4 * kH};
 TEST(ContactPhysics, BouncingBallApexesFollowE2n) {
     const double e = 0.8, h0 = 1.0;
     for (double dt : kSteps) {
-        Sim run(test::ball_drop(e, h0, dt));
+        Sim run(scenes::ball_drop(e, h0, dt));
         std::vector<double> apex;
         bool armed = false;
         for (int k = 0; k < run.steps_for(6.0) && apex.size() < 5; ++k) {
@@ -62,7 +67,7 @@ TEST(ContactPhysics, BoxSlidesDownInclineAtCoulombRate) {
     const double expected = kG * (std::sin(angle) - mu * std::cos(angle));
     const Vec3 downhill = Quat(Eigen::AngleAxisd(angle, Vec3::UnitY())) * Vec3(1, 0, 0);
     for (double dt : kSteps) {
-        Sim run(test::incline(angle, mu, dt, true));
+        Sim run(scenes::incline(angle, mu, dt, true));
         run.steps(run.steps_for(2.0));
         const double accel = run.state.v[1].dot(downhill) / run.state.time(run.model);
         const double err = std::abs(accel / expected - 1.0);
@@ -77,7 +82,7 @@ TEST(ContactPhysics, BoxSlidesDownInclineAtCoulombRate) {
 TEST(ContactPhysics, BoxOnShallowInclineDoesNotCreep) {
     const double angle = 20.0 * std::numbers::pi / 180.0, mu = 0.5; // tan 20 deg = 0.36
     for (double dt : kSteps) {
-        Sim run(test::incline(angle, mu, dt, false));
+        Sim run(scenes::incline(angle, mu, dt, false));
         const Vec3 start = run.state.x[1];
         run.steps(run.steps_for(10.0));
         const double creep = (run.state.x[1] - start).norm();
@@ -91,7 +96,7 @@ TEST(ContactPhysics, BoxOnShallowInclineDoesNotCreep) {
 TEST(ContactPhysics, NewtonsCradleSendsOneBallOut) {
     const double v = 1.0;
     for (double dt : kSteps) {
-        Sim run(test::cradle(v, dt));
+        Sim run(scenes::cradle(v, dt));
         const double p0 = diagnose(run.model, run.state).linear_momentum.x();
         double worst_p = 0.0;
         for (int k = 0; k < run.steps_for(0.5); ++k) {
@@ -120,7 +125,7 @@ double max_drift(const State& a, const State& b) {
 
 TEST(ContactPhysics, TowerOfTenBoxesStands) {
     for (double dt : kSteps) {
-        Sim run(test::tower(10, dt));
+        Sim run(scenes::box_stack(10, 0.5, dt));
         const State start = run.state;
         run.steps(run.steps_for(10.0));
         const double drift = max_drift(start, run.state); // includes the soft settling
@@ -132,7 +137,7 @@ TEST(ContactPhysics, TowerOfTenBoxesStands) {
 
 TEST(ContactPhysics, PyramidOfTwentyBoxesStands) {
     for (double dt : kSteps) {
-        Sim run(test::pyramid(dt));
+        Sim run(scenes::pyramid(dt));
         ASSERT_EQ(run.model.body_count(), 21);
         const State start = run.state;
         run.steps(run.steps_for(10.0));
@@ -147,7 +152,7 @@ TEST(ContactPhysics, PyramidOfTwentyBoxesStands) {
 // at 50 m/s (0.21 m per step at h, 0.83 m at 4h) in front of a 1 cm wall.
 TEST(ContactPhysics, FastBallStopsAtThinWall) {
     for (double dt : kSteps) {
-        Sim run(test::bullet(50.0, dt));
+        Sim run(scenes::bullet(50.0, dt));
         double furthest = -1.0;
         for (int k = 0; k < run.steps_for(0.5); ++k) {
             run.steps(1);
@@ -168,7 +173,7 @@ TEST(ContactPhysics, FastBallStopsAtThinWall) {
 // yet); a bias or a friction impulse that leaked into them would move the spheres.
 TEST(ContactPhysics, SpeculativeContactAtRestAppliesNothing) {
     for (double dt : kSteps) {
-        test::Scene scene;
+        scenes::Scene scene;
         scene.world.dt = dt;
         scene.world.gravity = Vec3::Zero();
         scene.world.contact.sleeping = false;

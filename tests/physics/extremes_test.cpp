@@ -35,8 +35,7 @@ struct Measured {
 };
 
 // Runs `steps` steps and measures body 0 against its exact motion.
-Measured run_against_exact(const exact::ReferenceScene& scene, Integrator id, double h,
-                           long steps) {
+Measured run_against_exact(const scenes::Scene& scene, Integrator id, double h, long steps) {
     World w = make_world(scene, id, h);
     const exact::ExactBodyMotion ex(w.model, w.state, 0);
     testing::run(w, steps);
@@ -44,8 +43,8 @@ Measured run_against_exact(const exact::ReferenceScene& scene, Integrator id, do
     return {rotation_angle_between(w.state.q[0], b.q), (w.state.x[0] - b.x).norm()};
 }
 
-exact::ReferenceScene moving_flip() {
-    exact::ReferenceScene s = exact::intermediate_axis_scene();
+scenes::Scene moving_flip() {
+    scenes::Scene s = scenes::intermediate_axis_scene();
     s.bodies[0].position = Vec3(1.0, 2.0, 3.0);
     s.bodies[0].velocity = Vec3(0.3, -0.2, 0.1);
     return s;
@@ -59,7 +58,7 @@ TEST(Extremes, TinyStepsFollowTheTruncationLawDownToRoundOff) {
     // accumulated (t = step * dt, state.h) and the position is summed with Kahan's compensation
     // (physics/compensated.h); the rotation is renormalised each step but not compensated:
     // measured 1e-12 (rk4, splitting, midpoint) to 2.5e-11 rad (splitting4, 5 stages a step).
-    const exact::ReferenceScene scene = moving_flip();
+    const scenes::Scene scene = moving_flip();
     for (Integrator id : all_integrators()) {
         const int p = integrator_info(id).order;
         const Measured coarse = run_against_exact(scene, id, 1e-5, 10000);
@@ -83,7 +82,7 @@ TEST(Extremes, FarFromTheOriginTheRotationIsUntouched) {
     // where the body is, so q and w must be bit-identical; the displacement x(t) - x(0) must be the
     // same to the round-off of a 1e6 m coordinate (ulp = 1.2e-10 m), whatever the method's own
     // truncation error.
-    exact::ReferenceScene near = exact::intermediate_axis_scene(), far = near;
+    scenes::Scene near = scenes::intermediate_axis_scene(), far = near;
     near.world.gravity = far.world.gravity = Vec3(0.0, 0.0, -9.81);
     near.bodies[0].velocity = far.bodies[0].velocity = Vec3(0.5, -0.5, 5.0);
     far.bodies[0].position = Vec3(1e6, -1e6, 1e6);
@@ -103,7 +102,7 @@ TEST(Extremes, FarFromTheOriginTheRotationIsUntouched) {
 TEST(Extremes, TinyStepsFarFromTheOriginKeepTheirIncrements) {
     // h = 1e-7 s at 1e6 m: each increment h v (3e-8 m) is 260 ulps of x, so a naive x += h v
     // rounds away up to 0.2% of every step. Compensated summation (compensated.h) keeps them.
-    exact::ReferenceScene s = moving_flip();
+    scenes::Scene s = moving_flip();
     s.bodies[0].position = Vec3(1e6, -1e6, 1e6);
     const Integrator id = integrator_from_name("splitting").value();
     World w = make_world(s, id, 1e-7);
@@ -124,7 +123,7 @@ TEST(Extremes, VeryFastSpinIsTheSlowSpinInFastTime) {
     // Torque-free motion scales exactly: w -> s w, t -> t / s. At |w| = 1e4 rad/s and h = 1e-6 s
     // every integrator must do what it does at |w| = 1 rad/s and h = 1e-2 s (same h|w| = 0.01):
     // no absolute tolerance, threshold or clamp inside may depend on the spin rate.
-    exact::ReferenceScene slow = exact::tumbling_box_scene(), fast = slow;
+    scenes::Scene slow = scenes::tumbling_box_scene(), fast = slow;
     const Vec3 dir = Vec3(1.0, 2.0, 3.0).normalized();
     slow.bodies[0].angular_velocity = dir;
     fast.bodies[0].angular_velocity = 1e4 * dir;
@@ -145,7 +144,7 @@ TEST(Extremes, VeryFastSpinAtAnOrdinaryStep) {
     // |w| = 1e4 rad/s at the default h = 1/240 s: h|w| = 42, a turn of 6.6 revolutions a step.
     // The methods built from exact rotations keep |L| and world L to round-off and do not blow
     // up; the accuracy is gone, but nothing becomes NaN.
-    exact::ReferenceScene s = exact::tumbling_box_scene();
+    scenes::Scene s = scenes::tumbling_box_scene();
     s.bodies[0].angular_velocity = 1e4 * Vec3(1.0, 2.0, 3.0).normalized();
     for (const char* name : {"splitting", "splitting4"}) {
         World w = make_world(s, integrator_from_name(name).value(), 1.0 / 240.0);
@@ -170,7 +169,7 @@ TEST(Extremes, NearlyDegenerateInertiaIsTheSymmetricTop) {
     const Vec3 sym(0.02, 0.02, 0.01), near(0.02, 0.02 * (1.0 + 1e-12), 0.01);
     const Vec3 w0(1.0, 0.5, 6.0);
     for (Integrator id : all_integrators()) {
-        exact::ReferenceScene a = exact::tumbling_box_scene(), b = a;
+        scenes::Scene a = scenes::tumbling_box_scene(), b = a;
         a.bodies[0].inertia = sym.asDiagonal();
         b.bodies[0].inertia = near.asDiagonal();
         a.bodies[0].angular_velocity = b.bodies[0].angular_velocity = w0;
@@ -196,7 +195,7 @@ TEST(Extremes, TenMillionSplittingStepsKeepEnergyBounded) {
     // a symplectic method's energy error oscillates without drift, so the worst error of the last
     // tenth is no larger than that of the first tenth (up to the oscillation's sampling), and
     // world L is kept to round-off.
-    const exact::ReferenceScene s = exact::tumbling_box_scene();
+    const scenes::Scene s = scenes::tumbling_box_scene();
     World w = make_world(s, integrator_from_name("splitting").value(), 0.01);
     const Diagnostics d0 = diagnose(w.model, w.state);
     const long steps = 10000000, every = 1000;

@@ -35,7 +35,7 @@ struct LongRun {
 };
 
 LongRun long_run(Integrator integrator, long steps) {
-    World w = make_world(exact::intermediate_axis_scene(), integrator, 1.0 / 240.0);
+    World w = make_world(scenes::intermediate_axis_scene(), integrator, 1.0 / 240.0);
     const Diagnostics d0 = diagnose(w.model, w.state);
     LongRun r;
     for (long k = 1; k <= steps; ++k) {
@@ -78,7 +78,7 @@ TEST(Conservation, MidpointKeepsAngularMomentumAndEnergy) {
 
 // MuJoCo's box: half sizes (0.1, 0.2, 0.3), 1 kg, w0 = (1, 2, 3), h = 0.01, 500 steps (5 s).
 double energy_ratio_after_5s(Integrator integrator) {
-    World w = make_world(exact::tumbling_box_scene(), integrator, 0.01);
+    World w = make_world(scenes::tumbling_box_scene(), integrator, 0.01);
     const double e0 = diagnose(w.model, w.state).energy();
     testing::run(w, 500);
     return diagnose(w.model, w.state).energy() / e0;
@@ -97,7 +97,7 @@ TEST(Conservation, EulerDriftsEnergyOnTheTumblingBoxAndLosesIt) {
 TEST(Conservation, SymplecticEulerGainsEnergyEveryStep) {
     // Torque-free, the step is exactly w_b' = w_b + h I^-1 (m x w_b) in the body frame, so
     // 2 E' = 2 E + h^2 |m x w_b|^2_{I^-1} > 2 E at every step (integrator_symplectic_euler.cpp).
-    World w = make_world(exact::tumbling_box_scene(), Integrator::SymplecticEuler, 0.01);
+    World w = make_world(scenes::tumbling_box_scene(), Integrator::SymplecticEuler, 0.01);
     const double e0 = diagnose(w.model, w.state).energy();
     double prev = e0;
     int decreases = 0;
@@ -119,8 +119,8 @@ TEST(Conservation, ImplicitGyroNeverGainsEnergy) {
     // derivation in integrator_implicit_gyro.cpp proves it while h |w| <= I_min / (I_max - I_min);
     // the two scenes below satisfy that (checked), and the run must dissipate visibly (so the
     // check is not passed by a method that does nothing).
-    for (const exact::ReferenceScene& scene :
-         {exact::tumbling_box_scene(), exact::intermediate_axis_scene()}) {
+    for (const scenes::Scene& scene :
+         {scenes::tumbling_box_scene(), scenes::intermediate_axis_scene()}) {
         const double h = 0.01;
         World w = make_world(scene, Integrator::ImplicitGyro, h);
         const Vec3& I = w.model.inertia[0];
@@ -144,7 +144,7 @@ TEST(Conservation, ImplicitGyroNeverGainsEnergy) {
 }
 
 TEST(Conservation, EulerMomentumKeepsWorldAngularMomentumButNotEnergy) {
-    World w = make_world(exact::tumbling_box_scene(), Integrator::EulerMomentum, 0.01);
+    World w = make_world(scenes::tumbling_box_scene(), Integrator::EulerMomentum, 0.01);
     const Diagnostics d0 = diagnose(w.model, w.state);
     testing::run(w, 500);
     const Diagnostics d = diagnose(w.model, w.state);

@@ -14,9 +14,9 @@ using testing::name_of;
 using testing::run;
 using testing::World;
 
-exact::ReferenceScene mixed_scene() {
-    exact::ReferenceScene scene = exact::gravity_spin_scene();
-    const exact::ReferenceScene flip = exact::intermediate_axis_scene();
+scenes::Scene mixed_scene() {
+    scenes::Scene scene = scenes::gravity_spin_scene();
+    const scenes::Scene flip = scenes::intermediate_axis_scene();
     scene.bodies.push_back(flip.bodies[0]);
     scene.bodies.back().position = Vec3(2.0, 0.0, 1.0);
     return scene;

@@ -1,10 +1,10 @@
 #pragma once
-// Shared by the integrator tests: build a reference scene (physics/exact/reference_scenes.h) with a
-// given integrator and step, run it, and measure the distance to the exact solution.
+// Shared by the integrator tests: build a reference scene (physics/scenes/reference_scenes.h) with
+// a given integrator and step, run it, and measure the distance to the exact solution.
 #include "physics/build.h"
 #include "physics/exact/body_motion.h"
-#include "physics/exact/reference_scenes.h"
 #include "physics/integrator.h"
+#include "physics/scenes/reference_scenes.h"
 #include "physics/step.h"
 
 #include <algorithm>
@@ -20,7 +20,7 @@ struct World {
     State state;
 };
 
-inline World make_world(const exact::ReferenceScene& scene, Integrator integrator, double h) {
+inline World make_world(const scenes::Scene& scene, Integrator integrator, double h) {
     WorldDef world = scene.world;
     world.integrator = integrator;
     world.dt = h;
@@ -53,7 +53,7 @@ inline double error_against_exact(const World& w, const std::vector<exact::Exact
 
 // Runs `scene` with `integrator` at step h up to the scene's duration (rounded to whole steps)
 // and returns the error against the exact solution there.
-inline double error_at_end(const exact::ReferenceScene& scene, Integrator integrator, double h) {
+inline double error_at_end(const scenes::Scene& scene, Integrator integrator, double h) {
     World w = make_world(scene, integrator, h);
     std::vector<exact::ExactBodyMotion> ex;
     for (int i : w.model.dynamic_bodies) ex.emplace_back(w.model, w.state, i);

@@ -19,8 +19,8 @@ namespace {
 using testing::make_world;
 using testing::World;
 
-exact::ReferenceScene fast_spin() {
-    exact::ReferenceScene scene = exact::tumbling_box_scene();
+scenes::Scene fast_spin() {
+    scenes::Scene scene = scenes::tumbling_box_scene();
     scene.bodies[0].angular_velocity = Vec3(0.1, 100.0, 0.1); // near the middle axis
     return scene;
 }

@@ -35,7 +35,7 @@ class IntegratorOrder : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(IntegratorOrder, MatchesTheoryOnTheIntermediateAxisFlip) {
     const IntegratorInfo& info = integrator_info(GetParam());
-    const exact::ReferenceScene scene = exact::intermediate_axis_scene();
+    const scenes::Scene scene = scenes::intermediate_axis_scene();
     const double h = base_step(info.order);
     const double e1 = error_at_end(scene, info.id, h);
     const double e2 = error_at_end(scene, info.id, h / 2.0);

@@ -36,7 +36,7 @@ class IntegratorScaling : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(IntegratorScaling, ErrorScalesWithStepOnGravityAndSpin) {
     const IntegratorInfo& info = integrator_info(GetParam());
-    const exact::ReferenceScene scene = exact::gravity_spin_scene();
+    const scenes::Scene scene = scenes::gravity_spin_scene();
     const Ladder l = ladder(info.order);
     const double e1 = error_at_end(scene, info.id, l.h);
     const double e2 = error_at_end(scene, info.id, 2.0 * l.h);

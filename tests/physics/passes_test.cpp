@@ -46,12 +46,12 @@ double max_difference(const Model& m, const State& a, const State& b) {
 }
 
 TEST(Passes, AssembledFromWhatTheSceneContains) {
-    const World spheres = make_world(exact::torque_free_spheres(10), Integrator::Rk4, 0.01);
+    const World spheres = make_world(scenes::torque_free_spheres(10), Integrator::Rk4, 0.01);
     EXPECT_FALSE(spheres.model.passes.gravity);
     EXPECT_FALSE(spheres.model.passes.applied_loads);
     EXPECT_FALSE(spheres.model.passes.gyroscopic);
     EXPECT_FALSE(spheres.model.passes.contacts) << spheres.model.touch.why;
-    const World mixed = make_world(exact::gravity_spin_scene(), Integrator::Rk4, 0.01);
+    const World mixed = make_world(scenes::gravity_spin_scene(), Integrator::Rk4, 0.01);
     EXPECT_TRUE(mixed.model.passes.gravity);
     EXPECT_TRUE(mixed.model.passes.applied_loads);
     EXPECT_TRUE(mixed.model.passes.gyroscopic);
@@ -65,7 +65,7 @@ class PassesUnchanged : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(PassesUnchanged, SkippedLoadPassesAreBitIdentical) {
     // The tumbling book without gravity or loads: full pipeline adds zeros, to the same bits.
-    World assembled = make_world(exact::intermediate_axis_scene(), GetParam(), 1.0 / 240.0);
+    World assembled = make_world(scenes::intermediate_axis_scene(), GetParam(), 1.0 / 240.0);
     World full = assembled;
     force_all_passes(full.model);
     run(assembled, 2000);
@@ -74,8 +74,8 @@ TEST_P(PassesUnchanged, SkippedLoadPassesAreBitIdentical) {
 }
 
 TEST_P(PassesUnchanged, SkippedIsotropicWorkAgreesToRoundOff) {
-    for (const exact::ReferenceScene& scene :
-         {exact::torque_free_spheres(20), exact::gravity_spin_scene()}) {
+    for (const scenes::Scene& scene :
+         {scenes::torque_free_spheres(20), scenes::gravity_spin_scene()}) {
         World assembled = make_world(scene, GetParam(), 1.0 / 240.0);
         World full = assembled;
         force_all_passes(full.model);

@@ -1,15 +1,16 @@
 // Sleeping: a settled stack sleeps (no motion at all, no solver work), a ball landing on it wakes
 // the whole island, and the scene switch turns sleeping off.
-#include "contact_scenes.h"
 #include "measured.h"
+#include "physics/scenes/contact_scenes.h"
+#include "scene_sim.h"
 
 #include <gtest/gtest.h>
 
 namespace tumble::physics {
 namespace {
 
-test::Scene stack_and_ball(bool sleeping, double ball_height) {
-    test::Scene s = test::tower(3, 1.0 / 240.0);
+scenes::Scene stack_and_ball(bool sleeping, double ball_height) {
+    scenes::Scene s = scenes::box_stack(3, 0.5, 1.0 / 240.0);
     s.world.contact.sleeping = sleeping;
     BodyDef ball;
     ball.shape = Shape::sphere(0.1);

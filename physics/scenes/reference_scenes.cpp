@@ -1,16 +1,14 @@
-#include "physics/exact/reference_scenes.h"
+#include "physics/scenes/reference_scenes.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace tumble::exact {
+namespace tumble::scenes {
 
 using physics::BodyDef;
 using physics::Quat;
 using physics::Shape;
 using physics::Vec3;
-
-namespace {
 
 BodyDef book() {
     BodyDef b;
@@ -19,10 +17,8 @@ BodyDef book() {
     return b;
 }
 
-} // namespace
-
-ReferenceScene intermediate_axis_scene() {
-    ReferenceScene s;
+Scene intermediate_axis_scene() {
+    Scene s;
     s.name = "intermediate-axis";
     s.world.gravity = Vec3::Zero();
     BodyDef b = book();
@@ -32,8 +28,8 @@ ReferenceScene intermediate_axis_scene() {
     return s;
 }
 
-ReferenceScene tumbling_box_scene() {
-    ReferenceScene s;
+Scene tumbling_box_scene() {
+    Scene s;
     s.name = "tumbling-box";
     s.world.gravity = Vec3::Zero();
     BodyDef b;
@@ -45,8 +41,8 @@ ReferenceScene tumbling_box_scene() {
     return s;
 }
 
-ReferenceScene gravity_spin_scene() {
-    ReferenceScene s;
+Scene gravity_spin_scene() {
+    Scene s;
     s.name = "gravity-and-spin";
     s.world.gravity = Vec3(0.0, 0.0, -9.81);
     BodyDef thrown = book();
@@ -66,8 +62,8 @@ ReferenceScene gravity_spin_scene() {
     return s;
 }
 
-ReferenceScene torque_free_spheres(int count) {
-    ReferenceScene s;
+Scene torque_free_spheres(int count) {
+    Scene s;
     s.name = "torque-free-spheres";
     s.world.gravity = Vec3::Zero();
     // Every pair separates: relative velocity 0.2/s d + (0, 0, dz) with d in the plane z = 0, so
@@ -87,4 +83,4 @@ ReferenceScene torque_free_spheres(int count) {
     return s;
 }
 
-} // namespace tumble::exact
+} // namespace tumble::scenes

@@ -1,44 +1,30 @@
-#pragma once
-// Small contact scenes shared by the physics tests: built in code, no files.
-#include "physics/build.h"
-#include "physics/step.h"
+#include "physics/scenes/contact_scenes.h"
 
-#include <cmath>
-#include <numbers>
-#include <vector>
+#include "physics/scenes/ground.h"
 
-namespace tumble::physics::test {
+namespace tumble::scenes {
 
-struct Scene {
-    WorldDef world;
-    std::vector<BodyDef> bodies;
-};
+using physics::BodyDef;
+using physics::Quat;
+using physics::Shape;
+using physics::Vec3;
 
-inline BodyDef ground(double friction = 0.5) {
-    BodyDef g;
-    g.shape = Shape::plane();
-    g.motion = Motion::Static;
-    g.material.friction = friction;
-    return g;
-}
-
-// A ball of radius 0.1 m dropped from rest with its bottom at h0 above a plane.
-inline Scene ball_drop(double restitution, double h0, double dt) {
+Scene ball_drop(double restitution, double h0, double dt) {
     Scene s;
+    s.name = "ball-drop";
     s.world.dt = dt;
     BodyDef ball;
-    ball.shape = Shape::sphere(0.1);
+    ball.shape = Shape::sphere(kDropBallRadius);
     ball.mass = 1.0;
-    ball.position = Vec3(0, 0, 0.1 + h0);
+    ball.position = Vec3(0, 0, kDropBallRadius + h0);
     ball.material.restitution = restitution;
     s.bodies = {ground(), ball};
     return s;
 }
 
-// A 0.2 x 0.2 x 0.1 m box resting on a plane tilted by `angle` about y (downhill is +x rotated),
-// both with friction mu.
-inline Scene incline(double angle, double mu, double dt, bool sleeping) {
+Scene incline(double angle, double mu, double dt, bool sleeping) {
     Scene s;
+    s.name = "incline";
     s.world.dt = dt;
     s.world.contact.sleeping = sleeping;
     const Quat tilt(Eigen::AngleAxisd(angle, Vec3::UnitY()));
@@ -54,25 +40,26 @@ inline Scene incline(double angle, double mu, double dt, bool sleeping) {
     return s;
 }
 
-// n boxes of 0.5 m stacked on a plane.
-inline Scene tower(int n, double dt) {
+Scene box_stack(int n, double edge, double dt) {
     Scene s;
+    s.name = "box-stack";
     s.world.dt = dt;
     s.world.contact.sleeping = false;
     s.bodies = {ground()};
+    const double half = 0.5 * edge;
     for (int i = 0; i < n; ++i) {
         BodyDef b;
-        b.shape = Shape::box(Vec3(0.25, 0.25, 0.25));
+        b.shape = Shape::box(Vec3(half, half, half));
         b.mass = 1.0;
-        b.position = Vec3(0, 0, 0.25 + 0.5 * i);
+        b.position = Vec3(0, 0, half + edge * i);
         s.bodies.push_back(b);
     }
     return s;
 }
 
-// A 2D pyramid of 20 boxes of 0.5 m: rows of 6, 5, 4, 3, 2 with 1 cm gaps.
-inline Scene pyramid(double dt) {
+Scene pyramid(double dt) {
     Scene s;
+    s.name = "pyramid";
     s.world.dt = dt;
     s.world.contact.sleeping = false;
     s.bodies = {ground()};
@@ -89,10 +76,9 @@ inline Scene pyramid(double dt) {
     return s;
 }
 
-// Newton's cradle in free space: five touching steel-like balls (e = 1, no friction), the first
-// sent in at `speed` from 10 cm away.
-inline Scene cradle(double speed, double dt) {
+Scene cradle(double speed, double dt) {
     Scene s;
+    s.name = "cradle";
     s.world.dt = dt;
     s.world.gravity = Vec3::Zero();
     s.world.contact.sleeping = false;
@@ -109,14 +95,14 @@ inline Scene cradle(double speed, double dt) {
     return s;
 }
 
-// A 2 cm ball fired along +x at `speed` towards a static wall 1 cm thick at x = 0.
-inline Scene bullet(double speed, double dt) {
+Scene bullet(double speed, double dt) {
     Scene s;
+    s.name = "bullet";
     s.world.dt = dt;
     s.world.gravity = Vec3::Zero();
     BodyDef wall;
     wall.shape = Shape::box(Vec3(0.005, 0.5, 0.5));
-    wall.motion = Motion::Static;
+    wall.motion = physics::Motion::Static;
     BodyDef ball;
     ball.shape = Shape::sphere(0.02);
     ball.mass = 0.01;
@@ -126,18 +112,4 @@ inline Scene bullet(double speed, double dt) {
     return s;
 }
 
-struct Sim {
-    Model model;
-    State state;
-    explicit Sim(const Scene& s) : model(build_model(s.world, s.bodies)) {
-        state = initial_state(model, s.bodies);
-    }
-    void steps(int n) {
-        for (int k = 0; k < n; ++k) step(model, state);
-    }
-    int steps_for(double seconds) const {
-        return static_cast<int>(std::lround(seconds / model.dt));
-    }
-};
-
-} // namespace tumble::physics::test
+} // namespace tumble::scenes
