@@ -5,8 +5,8 @@
 namespace tumble::app {
 
 Simulation make_simulation(const Scene& scene, double dt, int threads) {
-    Simulation sim{build_checked_model(scene, dt), {}, nullptr, scene.source};
-    sim.state = physics::initial_state(sim.model, scene.bodies);
+    CheckedStart start = build_checked(scene, dt);
+    Simulation sim{std::move(start.model), std::move(start.state), nullptr, scene.source};
     sim.workspace =
         std::make_unique<physics::StepWorkspace>(sim.model.passes.contacts ? threads : 1);
     return sim;

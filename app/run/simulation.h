@@ -23,7 +23,7 @@ struct Simulation {
 
 // Builds the model with time step `dt` (the scene's, or one adjusted to hit frame times) and a
 // workspace of `threads` threads (only a scene with contacts uses more than one). Throws
-// SceneError as build_checked_model() (app/scene/scene_check.h) does.
+// SceneError as build_checked() (app/scene/scene_check.h) does.
 Simulation make_simulation(const Scene& scene, double dt, int threads = 1);
 
 // Why a run asked for `threads` > 1 physics threads steps on one: the scene has no contact stage,

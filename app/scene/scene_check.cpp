@@ -39,11 +39,13 @@ std::string with_body_names(const Scene& scene, const std::string& what) {
 
 } // namespace
 
-physics::Model build_checked_model(const Scene& scene, double dt) {
+CheckedStart build_checked(const Scene& scene, double dt) {
     physics::WorldDef world = scene.world;
     world.dt = dt;
     try {
-        return physics::build_model(world, scene.bodies);
+        CheckedStart start{physics::build_model(world, scene.bodies), {}};
+        start.state = physics::initial_state(start.model, scene.bodies);
+        return start;
     } catch (const physics::ModelError& e) {
         const std::string field = json_field(e.field);
         const std::string place =

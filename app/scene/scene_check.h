@@ -11,10 +11,15 @@
 
 namespace tumble::app {
 
-// physics::build_model with step `dt` (the scene's, or one adjusted to hit frame times).
-// Validation errors become SceneError at the JSON path of the offending field, with the bodies
-// the message mentions named as the scene names them.
-physics::Model build_checked_model(const Scene& scene, double dt);
+struct CheckedStart {
+    physics::Model model;
+    physics::State state; // at t = 0
+};
+
+// physics::build_model with step `dt` (the scene's, or one adjusted to hit frame times) and
+// physics::initial_state. Validation errors of either become SceneError at the JSON path of the
+// offending field, with the bodies the message mentions named as the scene names them.
+CheckedStart build_checked(const Scene& scene, double dt);
 
 // Warnings about the initial state that do not stop the run: pairs of bodies starting deeply
 // interpenetrated (physics::deep_initial_overlaps), each naming both bodies.

@@ -94,8 +94,8 @@ Scene load_scene(const std::string& text, const std::string& source) {
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);
     // Physics validation, mapped to JSON paths; then what is legal but probably unintended.
-    const physics::Model model = build_checked_model(s, s.world.dt);
-    s.warnings = initial_state_warnings(s, model, physics::initial_state(model, s.bodies));
+    const CheckedStart start = build_checked(s, s.world.dt);
+    s.warnings = initial_state_warnings(s, start.model, start.state);
     return s;
 }
 

@@ -75,7 +75,8 @@ TEST(ExitCodes, ADivergedRunExitsOneNamingFileBodyAndStep) {
 
 TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
     const auto dir = scratch_dir();
-    ASSERT_EQ(run_tumble(dir, "render --frame 0 --width 320 --height 180 -o a.png -q").exit_code, 0);
+    ASSERT_EQ(run_tumble(dir, "render --frame 0 --width 320 --height 180 -o a.png -q").exit_code,
+              0);
     ASSERT_EQ(run_tumble(dir, "render --frame 99 --width 320 --height 180 -o b.png -q").exit_code,
               0);
     // 4 blocks (2 KiB in dash's 512-byte blocks): far less than any of these outputs.

@@ -18,9 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Room {
-    std::string folder;                // files below it, the longest match wins
-    std::vector<std::string> may_see;  // include prefixes allowed
-    std::vector<std::string> may_not;  // prefixes refused even below an allowed one
+    std::string folder;               // files below it, the longest match wins
+    std::vector<std::string> may_see; // include prefixes allowed
+    std::vector<std::string> may_not; // prefixes refused even below an allowed one
 };
 
 // Lower rooms first; a room may see itself and the rooms it lists, nothing above.
