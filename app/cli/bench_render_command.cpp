@@ -246,10 +246,11 @@ void print_table(const std::vector<Row>& rows, int repeats, double load) {
                     r.c->name, size, options_label(*r.c).c_str(), r.c->sink, r.frames, r.physics,
                     r.render, r.output, r.e2e, r.null_e2e, r.ratio(), r.cpu_ms, r.null_cpu_ms);
     }
-    std::printf("medians of %d runs; stage rates are frames per second of busy time (queue waits "
+    std::printf("%s of %d run%s; stage rates are frames per second of busy time (queue waits "
                 "excluded); ratio = null-sink end-to-end / real end-to-end; cpu = process CPU "
                 "time per frame, all threads; 1-minute load average %.2f on %u cores\n",
-                repeats, load, std::thread::hardware_concurrency());
+                repeats == 1 ? "values" : "medians", repeats, repeats == 1 ? "" : "s", load,
+                std::thread::hardware_concurrency());
 }
 
 int run_bench_render(const BenchRenderCommand& cmd) {

@@ -44,6 +44,8 @@ Subcommand add_diff_command(CLI::App& app) {
     auto cmd = std::make_shared<DiffCommand>();
     CLI::App* d = app.add_subcommand(
         "diff", "compare two PNG images by decoded pixels (exit 0 match, 1 differ)");
+    // Exact by default; the golden check's budget is in its manifest (README, "Golden images").
+    d->option_defaults()->always_capture_default();
     d->add_option("a", cmd->a, "first image")->required();
     d->add_option("b", cmd->b, "second image")->required();
     d->add_option("-o,--output", cmd->output,
@@ -54,8 +56,9 @@ Subcommand add_diff_command(CLI::App& app) {
                   "YIQ perceptual threshold (0..1)")
         ->check(CLI::Range(0.0, 1.0));
     d->add_option("--max-different", cmd->options.max_different, "pixels allowed to differ");
-    d->add_flag("!--no-aa", cmd->options.detect_antialiasing,
-                "count anti-aliased pixels as different");
+    d->add_flag_callback(
+        "--no-aa", [cmd] { cmd->options.detect_antialiasing = false; },
+        "count anti-aliased pixels as different (default: anti-aliasing is forgiven)");
     return {[d] { return d->parsed(); }, [cmd] { return run_diff(*cmd); }};
 }
 

@@ -4,9 +4,9 @@
 // (app/cli/failure.h).
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
+#include "app/cli/usage_error.h"
 #include "render/frame_sink.h"
 
-#include <cstdio>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -23,12 +23,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& h) {
         return app.exit(h);
     } catch (const CLI::ParseError& err) {
-        app.exit(err);
-        return kBadInput;
+        return report_usage_error(app, err);
     }
     tumble::render::quiet_video_logs();
     for (const Subcommand& c : commands)
         if (c.chosen()) return run_guarded(c.run);
-    std::fputs(app.help().c_str(), stdout);
-    return kOk;
+    return report_missing_command(app);
 }

@@ -65,13 +65,20 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
                    const render::FrameSink& sink, double wall) {
     if (cmd.common.quiet) return;
     const physics::Diagnostics d1 = physics::diagnose(sim.model, sim.state);
-    std::fprintf(stderr, "tumble: %s: %s\n", scene.source.c_str(), tl.describe().c_str());
+    if (cmd.frame) // a still: its own frame, not the whole video's
+        std::fprintf(
+            stderr, "tumble: %s: frame %lld at t = %.9g s, %d step%s of %.9g s per frame\n",
+            scene.source.c_str(), static_cast<long long>(*cmd.frame), tl.frame_time(*cmd.frame),
+            tl.steps_per_frame, tl.steps_per_frame == 1 ? "" : "s", tl.h);
+    else
+        std::fprintf(stderr, "tumble: %s: %s\n", scene.source.c_str(), tl.describe().c_str());
     std::fprintf(stderr,
                  "tumble: integrator %s, %d bodies, t_end = %.6g s, energy %.9g J -> %.9g J\n",
                  std::string(physics::integrator_info(sim.model.integrator).name).c_str(),
                  sim.model.body_count(), sim.state.time(sim.model), d0.energy(), d1.energy());
-    std::fprintf(stderr, "tumble: %lld frames in %.2f s wall (%.1f frames/s)\n",
-                 static_cast<long long>(r.frames), wall, wall > 0 ? r.frames / wall : 0.0);
+    std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s)\n",
+                 static_cast<long long>(r.frames), r.frames == 1 ? "" : "s", wall,
+                 wall > 0 ? r.frames / wall : 0.0);
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 

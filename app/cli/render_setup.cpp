@@ -3,6 +3,7 @@
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
 
+#include <cstdio>
 #include <filesystem>
 
 namespace tumble::app {
@@ -38,9 +39,12 @@ void check_frame_index(const RenderCommand& cmd, const Timeline& tl) {
 
 std::string output_name(const RenderCommand& cmd, const Scene& scene, const std::string& suffix) {
     std::string output = cmd.output;
-    if (output.empty()) {
-        const std::string stem = std::filesystem::path(scene.source).stem().string();
-        output = (stem.empty() ? "tumble" : stem) + suffix + ".mp4";
+    if (output.empty() && cmd.frame) { // a still: "default_000120.png"
+        char number[32];
+        std::snprintf(number, sizeof number, "_%06lld", static_cast<long long>(*cmd.frame));
+        output = scene_name(scene) + suffix + number + ".png";
+    } else if (output.empty()) {
+        output = scene_name(scene) + suffix + ".mp4";
     }
     if (cmd.frame && !output.ends_with(".png"))
         throw io::BadInput("--frame renders one still: the output must end in .png, got " + output);

@@ -43,7 +43,8 @@ std::string video_preset(const RenderCommand& cmd);
 // Throws SceneError when --frame names a frame outside the video.
 void check_frame_index(const RenderCommand& cmd, const Timeline& tl);
 
-// --output, or "<scene file stem><suffix>.mp4" ("tumble" for a scene without a file). Throws
+// --output, or "<scene name><suffix>.mp4" (app/scene/scene.h: scene_name), or for --frame K
+// "<scene name><suffix>_<K, six digits>.png". Throws
 // io::BadInput when the output cannot take this run: --frame writes one still, a .png.
 std::string output_name(const RenderCommand& cmd, const Scene& scene,
                         const std::string& suffix = "");

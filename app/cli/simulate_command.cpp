@@ -26,9 +26,9 @@ int run_simulate(const SimulateCommand& cmd) {
     const Scene scene = load_for_command(cmd.common);
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
-    if (const std::string note = threads_note(sim, cmd.common.threads);
-        !note.empty() && !cmd.common.quiet)
-        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
+    for (const std::string& note : {tl.adjustment_note(), threads_note(sim, cmd.common.threads)})
+        if (!note.empty() && !cmd.common.quiet)
+            std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     TrajectoryWriter out(cmd.output, scene);
     InterruptGuard guard;
     const std::int64_t total = tl.total_steps();

@@ -27,4 +27,15 @@ std::string Timeline::describe() const {
     return buf;
 }
 
+std::string Timeline::adjustment_note() const {
+    if (!adjusted()) return "";
+    char buf[256];
+    std::snprintf(
+        buf, sizeof buf,
+        "dt %.9g s lowered to %.9g s so that %d step%s land%s on each frame time (%d fps)",
+        scene_dt, h, steps_per_frame, steps_per_frame == 1 ? "" : "s",
+        steps_per_frame == 1 ? "s" : "", fps);
+    return buf;
+}
+
 } // namespace tumble::app

@@ -20,6 +20,9 @@ struct Timeline {
     double frame_time(std::int64_t k) const { return static_cast<double>(k) / fps; }
     std::int64_t total_steps() const { return (frames - 1) * steps_per_frame; }
     std::string describe() const; // one line for summaries and `tumble explain`
+    // When adjusted(): "dt 0.001 s lowered to 0.000980392157 s so that 17 steps land on each
+    // frame time (60 fps)"; else empty. Every command that steps a scene prints it.
+    std::string adjustment_note() const;
 };
 
 // frames = round(duration * fps), at least 1: a 10 s clip at 60 fps has 600 frames and lasts

@@ -14,6 +14,9 @@ using physics::Vec3;
 const glm::vec3 kPalette[] = {{0.90f, 0.35f, 0.25f}, {0.25f, 0.55f, 0.85f}, {0.95f, 0.75f, 0.20f},
                               {0.35f, 0.75f, 0.45f}, {0.65f, 0.40f, 0.80f}, {0.95f, 0.55f, 0.70f}};
 
+// A plane without a "color": a light neutral grey, so that a red or blue body stands out on it.
+constexpr glm::vec3 kGround{0.78f, 0.78f, 0.76f};
+
 // Inertia about the centre of mass in body axes: [I1, I2, I3] (principal along the body axes)
 // or a symmetric 3x3 [[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]], kg m^2.
 Mat3 read_inertia(const JsonReader& r) {
@@ -53,6 +56,7 @@ void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& 
     look.color = kPalette[index % std::size(kPalette)];
     read_shape(r.field("shape"), shapes, b, look); // app/scene/shape_loader.h
     const bool plane = b.shape.kind == physics::ShapeKind::Plane;
+    if (plane) look.color = kGround; // a floor, not a body: neutral, so every colour shows on it
     b.motion = plane ? physics::Motion::Static : physics::Motion::Dynamic;
     if (auto s = r.optional("static")) {
         const bool is_static = s->boolean();

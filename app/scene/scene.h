@@ -58,6 +58,10 @@ Scene load_scene(const std::string& text, const std::string& source);
 // "default.json"). An empty argument means the built-in default scene. Throws SceneError.
 Scene load_scene_argument(const std::string& argument);
 
+// The scene's short name: "default" for the built-in "builtin:default.json", "flip" for the file
+// "shots/flip.json"; "tumble" for a scene without a source. Default output names start with it.
+std::string scene_name(const Scene& scene);
+
 // Names of the built-in scenes (without .json).
 std::vector<std::string> builtin_scene_names();
 

@@ -99,6 +99,13 @@ Scene load_scene(const std::string& text, const std::string& source) {
     return s;
 }
 
+std::string scene_name(const Scene& scene) {
+    std::string source = scene.source;
+    if (source.starts_with("builtin:")) source.erase(0, 8);
+    const std::string stem = std::filesystem::path(source).stem().string();
+    return stem.empty() ? "tumble" : stem;
+}
+
 std::vector<std::string> builtin_scene_names() {
     std::vector<std::string> out;
     for (std::string_view name : assets::names()) {
