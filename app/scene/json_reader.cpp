@@ -1,5 +1,6 @@
 #include "app/scene/json_reader.h"
 
+#include "app/scene/json_duplicate_keys.h"
 #include "app/scene/json_nesting.h"
 #include "app/scene/text_place.h"
 
@@ -184,8 +185,9 @@ std::array<double, 3> JsonReader::vec3(const char* what) const {
     return out;
 }
 
-nlohmann::json parse_json(const std::string& text, const std::string& file) {
-    check_json_nesting(text, file); // before any tree is built or walked
+namespace {
+
+nlohmann::json parse_text(const std::string& text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
@@ -205,6 +207,15 @@ nlohmann::json parse_json(const std::string& text, const std::string& file) {
                          "expected a finite number, got " + token +
                              " (out of range for a double: non-finite)");
     }
+}
+
+} // namespace
+
+nlohmann::json parse_json(const std::string& text, const std::string& file) {
+    check_json_nesting(text, file); // before any tree is built or walked
+    nlohmann::json root = parse_text(text, file);
+    check_duplicate_keys(text, file); // the parser kept the last of them silently
+    return root;
 }
 
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {

@@ -63,7 +63,8 @@ std::string json_pointer_segment(const std::string& key);
 std::string describe_json(const nlohmann::json& v);
 
 // Parses `text` (the contents of `file`). Syntax errors, and arrays and objects nested deeper than
-// kMaxJsonDepth (app/scene/json_nesting.h), become SceneError with line:column.
+// kMaxJsonDepth (app/scene/json_nesting.h), become SceneError with line:column; a key twice in one
+// object (app/scene/json_duplicate_keys.h), SceneError at its JSON path naming both places.
 nlohmann::json parse_json(const std::string& text, const std::string& file);
 
 // Closest of `candidates` to `word` by edit distance, or empty if none is close.
