@@ -1,5 +1,6 @@
 #include "app/scene/shape_loader.h"
 
+#include "app/scene/obj_lines.h"
 #include "app/scene/scene_values.h"
 
 namespace tumble::app {
@@ -36,6 +37,8 @@ const std::pair<ObjMesh, std::uint32_t>& load_mesh(JsonReader file, double scale
     if (!text)
         file.fail("no mesh file " + describe_json(file.value()) +
                   " next to the scene file nor among the bundled meshes (assets/meshes/)");
+    if (auto bad = check_obj_lines(*text)) // app/scene/obj_lines.h
+        file.fail(mesh.origin + ":" + std::to_string(bad->line) + ": " + bad->what);
     auto solid = std::make_shared<physics::TriangleMesh>();
     if (auto why = parse_obj(*text, scale, *solid)) file.fail(mesh.origin + ": " + *why);
     if (auto why = physics::check_closed_mesh(*solid))
