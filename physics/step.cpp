@@ -71,20 +71,36 @@
 
 #include "physics/integrator.h"
 
+#include <cmath>
+
 namespace tumble::physics {
+
+namespace {
+
+// What of dynamic body i is not finite, or nullptr: its state, or the two terms of its kinetic
+// energy T = 1/2 m |v|^2 + 1/2 w . I_w w, which overflow long before v and w do (|v| > 1e154).
+// The rotational term is bounded by I_max |w|^2, two multiplications instead of a rotation.
+const char* not_finite(const Model& m, const State& s, int i) {
+    if (!all_finite(s.x[i])) return "position";
+    if (!all_finite(s.q[i])) return "orientation";
+    if (!all_finite(s.v[i])) return "velocity";
+    if (!all_finite(s.w[i])) return "angular velocity";
+    if (!std::isfinite(m.mass[i] * s.v[i].squaredNorm())) return "kinetic energy m |v|^2";
+    if (!std::isfinite(m.inertia[i].maxCoeff() * s.w[i].squaredNorm()))
+        return "rotational kinetic energy I |w|^2";
+    return nullptr;
+}
+
+} // namespace
 
 void check_finite(const Model& m, const State& s) {
     for (int i : m.dynamic_bodies) {
-        const char* bad = !all_finite(s.x[i])   ? "position"
-                          : !all_finite(s.q[i]) ? "orientation"
-                          : !all_finite(s.v[i]) ? "velocity"
-                          : !all_finite(s.w[i]) ? "angular velocity"
-                                                : nullptr;
-        if (bad)
+        if (const char* bad = not_finite(m, s, i))
             throw DivergenceError(i, s.step, bad,
                                   "body " + std::to_string(i) + ": " + bad +
                                       " is not finite after step " + std::to_string(s.step) +
-                                      " (the integrator diverged; try a smaller dt or another "
+                                      " (the integrator diverged, or the scene's speeds are "
+                                      "too large for a double; try a smaller dt or another "
                                       "integrator)");
     }
 }

@@ -5,7 +5,7 @@
 //                 (predict, solve, integrate, relax) around the named integrator, store, sleep
 //                 (contact_stage.h)
 //      integrate  otherwise the model's named integrator moves every dynamic body by h = dt
-//   2. check      every dynamic body's state is finite, or the run stops here
+//   2. check      every dynamic body's state and kinetic energy are finite, or the run stops
 #include "physics/contact_stage.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -22,7 +22,8 @@ struct DivergenceError : std::runtime_error {
         : std::runtime_error(what), body(body), step(step), quantity(std::move(quantity)) {}
     int body;
     std::int64_t step;
-    std::string quantity; // "position", "orientation", "velocity" or "angular velocity"
+    std::string quantity; // "position", "orientation", "velocity", "angular velocity", or a term
+                          // of the kinetic energy ("kinetic energy m |v|^2", "rotational ...")
 };
 
 // Advances `state` by one step. Throws DivergenceError; `state` then holds the bad values.
@@ -38,7 +39,8 @@ struct StepWorkspace {
 };
 void step(const Model& model, State& state, StepWorkspace& workspace);
 
-// Throws DivergenceError for the first dynamic body whose state is not finite.
+// Throws DivergenceError for the first dynamic body whose state, or a term of whose kinetic
+// energy (m |v|^2, I_max |w|^2), is not finite.
 void check_finite(const Model& model, const State& state);
 
 } // namespace tumble::physics

@@ -6,6 +6,8 @@
 #include "physics/step.h"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace tumble::app {
 
@@ -15,9 +17,11 @@ struct Simulation {
     // The contact stage's buffers and worker threads (physics/step.h). States do not depend on
     // the thread count: the same scene gives the same bits with 1 or N threads.
     std::unique_ptr<physics::StepWorkspace> workspace;
-    std::string source; // the scene's file, named in the message of a divergence
+    std::string source;                  // the scene's file, named in the message of a divergence
+    std::vector<std::string> body_names; // as the scene names them, in the same message
 
-    // One physics step. Throws physics::DivergenceError, its message starting with `source`.
+    // One physics step. Throws physics::DivergenceError, its message starting with `source` and
+    // naming the body as the scene does (`body 0 "rocket"`).
     void step();
 };
 

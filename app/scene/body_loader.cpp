@@ -85,7 +85,7 @@ void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& 
         if (frame == "body")
             b.angular_velocity = b.orientation.normalized() * b.angular_velocity;
         else if (frame != "world")
-            f->fail("expected \"world\" or \"body\", got \"" + frame + "\"");
+            f->fail("expected \"world\" or \"body\", got " + describe_json(f->value()));
     }
     if (auto g = r.optional("gravity_scale")) b.gravity_scale = g->number("a finite gravity scale");
     if (auto f = r.optional("force")) b.applied_force = read_vec3(*f, "a force [x, y, z] in N");

@@ -1,5 +1,9 @@
 #include "app/scene/json_reader.h"
 
+#include "app/scene/json_duplicate_keys.h"
+#include "app/scene/json_nesting.h"
+#include "app/scene/text_place.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,15 +11,29 @@
 namespace tumble::app {
 namespace {
 
-const char* type_name(const nlohmann::json& v) {
-    return v.type_name();
+constexpr std::size_t kExcerpt = 60; // characters of a value an error message quotes
+
+// `s` cut to at most `n` bytes, not inside a UTF-8 sequence.
+std::string utf8_prefix(const std::string& s, std::size_t n) {
+    if (s.size() <= n) return s;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return s.substr(0, n);
 }
 
-std::string escape_segment(const std::string& key) {
-    // RFC 6901: '~' -> "~0", '/' -> "~1".
-    std::string out;
-    for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    return out;
+std::string flat_dump(const nlohmann::json& v) {
+    return v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+// An array of a few numbers, booleans or nulls: short enough to quote whole.
+bool small_flat_array(const nlohmann::json& v) {
+    if (!v.is_array() || v.size() > 8) return false;
+    return std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) {
+        return e.is_number() || e.is_boolean() || e.is_null();
+    });
+}
+
+std::string count(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {
@@ -32,6 +50,29 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 } // namespace
 
+std::string json_pointer_segment(const std::string& key) {
+    // RFC 6901: '~' -> "~0", '/' -> "~1".
+    const bool cut = key.size() > kExcerpt;
+    std::string out;
+    for (char c : cut ? utf8_prefix(key, kExcerpt) : key)
+        out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    return cut ? out + "..." : out;
+}
+
+std::string describe_json(const nlohmann::json& v) {
+    if (v.is_string()) {
+        const auto& s = v.get_ref<const std::string&>();
+        if (s.size() <= kExcerpt) return flat_dump(v);
+        return flat_dump(utf8_prefix(s, kExcerpt)) + "... (a string of " +
+               count(s.size(), "byte", "bytes") + ")";
+    }
+    if (v.is_object()) return "an object with " + count(v.size(), "key", "keys");
+    if (v.is_array() && !small_flat_array(v))
+        return "an array of " + count(v.size(), "element", "elements");
+    const std::string text = flat_dump(v); // a scalar, or a few of them in brackets
+    return text.size() <= kExcerpt ? text : text.substr(0, kExcerpt) + "...";
+}
+
 JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string path)
     : value_(value), file_(std::move(file)), path_(path.empty() ? "/" : std::move(path)) {}
 
@@ -44,7 +85,7 @@ JsonReader JsonReader::child(const nlohmann::json& v, const std::string& segment
 }
 
 void JsonReader::expect_object() const {
-    if (!value_.is_object()) fail(std::string("expected an object, got ") + type_name(value_));
+    if (!value_.is_object()) fail(std::string("expected an object, got ") + value_.type_name());
 }
 
 bool JsonReader::has(const char* key) const {
@@ -57,7 +98,7 @@ JsonReader JsonReader::field(const char* key) {
     auto it = value_.find(key);
     if (it == value_.end()) fail(std::string("missing required field \"") + key + "\"");
     read_.insert(key);
-    return child(*it, escape_segment(key));
+    return child(*it, json_pointer_segment(key));
 }
 
 std::optional<JsonReader> JsonReader::optional(const char* key) {
@@ -65,7 +106,7 @@ std::optional<JsonReader> JsonReader::optional(const char* key) {
     read_.insert(key);
     auto it = value_.find(key);
     if (it == value_.end()) return std::nullopt;
-    return child(*it, escape_segment(key));
+    return child(*it, json_pointer_segment(key));
 }
 
 void JsonReader::finish() const {
@@ -73,18 +114,20 @@ void JsonReader::finish() const {
     std::vector<std::string> known(read_.begin(), read_.end());
     for (auto it = value_.begin(); it != value_.end(); ++it) {
         if (read_.count(it.key())) continue;
-        std::string what = "unknown field \"" + it.key() + "\"";
-        const std::string guess = closest_match(it.key(), known);
+        std::string what = "unknown field " + describe_json(it.key()); // cut if long
+        const bool long_key = it.key().size() > kExcerpt;
+        const std::string guess = long_key ? "" : closest_match(it.key(), known);
         if (!guess.empty()) what += " (did you mean \"" + guess + "\"?)";
         std::string fields;
         for (const std::string& k : known) fields += (fields.empty() ? "" : ", ") + k;
         what += "; fields allowed here: " + fields;
-        throw SceneError(file_, (path_ == "/" ? "" : path_) + "/" + escape_segment(it.key()), what);
+        throw SceneError(file_, (path_ == "/" ? "" : path_) + "/" + json_pointer_segment(it.key()),
+                         what);
     }
 }
 
 std::size_t JsonReader::size() const {
-    if (!value_.is_array()) fail(std::string("expected an array, got ") + type_name(value_));
+    if (!value_.is_array()) fail(std::string("expected an array, got ") + value_.type_name());
     return value_.size();
 }
 
@@ -94,7 +137,7 @@ JsonReader JsonReader::at(std::size_t index) const {
 
 double JsonReader::number(const char* what) const {
     if (!value_.is_number())
-        fail(std::string("expected ") + what + ", got " + type_name(value_) + " " + value_.dump());
+        fail(std::string("expected ") + what + ", got " + describe_json(value_));
     const double x = value_.get<double>();
     if (!std::isfinite(x)) fail(std::string("expected ") + what + ", got a non-finite number");
     return x;
@@ -102,19 +145,19 @@ double JsonReader::number(const char* what) const {
 
 double JsonReader::positive(const char* what) const {
     const double x = number(what);
-    if (!(x > 0.0)) fail(std::string("expected ") + what + ", got " + value_.dump());
+    if (!(x > 0.0)) fail(std::string("expected ") + what + ", got " + describe_json(value_));
     return x;
 }
 
 double JsonReader::non_negative(const char* what) const {
     const double x = number(what);
-    if (x < 0.0) fail(std::string("expected ") + what + ", got " + value_.dump());
+    if (x < 0.0) fail(std::string("expected ") + what + ", got " + describe_json(value_));
     return x;
 }
 
 int JsonReader::integer(int min, int max, const char* what) const {
     if (!value_.is_number_integer())
-        fail(std::string("expected ") + what + " (an integer), got " + value_.dump());
+        fail(std::string("expected ") + what + " (an integer), got " + describe_json(value_));
     const long long x = value_.get<long long>();
     if (x < min || x > max)
         fail(std::string("expected ") + what + " in [" + std::to_string(min) + ", " +
@@ -123,18 +166,20 @@ int JsonReader::integer(int min, int max, const char* what) const {
 }
 
 bool JsonReader::boolean() const {
-    if (!value_.is_boolean()) fail(std::string("expected true or false, got ") + value_.dump());
+    if (!value_.is_boolean())
+        fail(std::string("expected true or false, got ") + describe_json(value_));
     return value_.get<bool>();
 }
 
 std::string JsonReader::string() const {
-    if (!value_.is_string()) fail(std::string("expected a string, got ") + value_.dump());
+    if (!value_.is_string()) fail(std::string("expected a string, got ") + describe_json(value_));
     return value_.get<std::string>();
 }
 
 std::array<double, 3> JsonReader::vec3(const char* what) const {
     if (!value_.is_array() || value_.size() != 3)
-        fail(std::string("expected ") + what + " as an array of 3 numbers, got " + value_.dump());
+        fail(std::string("expected ") + what + " as an array of 3 numbers, got " +
+             describe_json(value_));
     std::array<double, 3> out{};
     for (std::size_t k = 0; k < 3; ++k) out[k] = at(k).number("a finite number");
     return out;
@@ -142,22 +187,7 @@ std::array<double, 3> JsonReader::vec3(const char* what) const {
 
 namespace {
 
-// "line:column" (1-based) of byte offset `at` in `text`.
-std::string line_column(const std::string& text, std::size_t at) {
-    at = std::min(at, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < at; ++k) {
-        if (text[k] == '\n')
-            ++line, column = 1;
-        else
-            ++column;
-    }
-    return std::to_string(line) + ":" + std::to_string(column);
-}
-
-} // namespace
-
-nlohmann::json parse_json(const std::string& text, const std::string& file) {
+nlohmann::json parse_text(const std::string& text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
@@ -177,6 +207,15 @@ nlohmann::json parse_json(const std::string& text, const std::string& file) {
                          "expected a finite number, got " + token +
                              " (out of range for a double: non-finite)");
     }
+}
+
+} // namespace
+
+nlohmann::json parse_json(const std::string& text, const std::string& file) {
+    check_json_nesting(text, file); // before any tree is built or walked
+    nlohmann::json root = parse_text(text, file);
+    check_duplicate_keys(text, file); // the parser kept the last of them silently
+    return root;
 }
 
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {

@@ -52,7 +52,19 @@ class JsonReader {
     std::set<std::string> read_;
 };
 
-// Parses `text` (the contents of `file`). Syntax errors become SceneError with line:column.
+// One segment of a JSON path (RFC 6901: '~' as "~0", '/' as "~1"), a long key cut to 60 bytes
+// and "...".
+std::string json_pointer_segment(const std::string& key);
+
+// A short, flat description of `v` for an error message, never longer than about 100
+// characters and never recursing: a number, boolean or null as written; a string quoted and cut
+// to 60 bytes; a few numbers in brackets as written ("[0.2,0,0.3]"); any other array or object
+// by its size ("an array of 1000000 elements", "an object with 3 keys").
+std::string describe_json(const nlohmann::json& v);
+
+// Parses `text` (the contents of `file`). Syntax errors, and arrays and objects nested deeper than
+// kMaxJsonDepth (app/scene/json_nesting.h), become SceneError with line:column; a key twice in one
+// object (app/scene/json_duplicate_keys.h), SceneError at its JSON path naming both places.
 nlohmann::json parse_json(const std::string& text, const std::string& file);
 
 // Closest of `candidates` to `word` by edit distance, or empty if none is close.

@@ -18,7 +18,8 @@ constexpr Preset kPresets[] = {{"plastic", {0.45f, 0.5f, 0.0f}},
 
 double unit_interval(const JsonReader& r, const char* what) {
     const double v = r.number(what);
-    if (v < 0.0 || v > 1.0) r.fail(std::string("expected ") + what + ", got " + r.value().dump());
+    if (v < 0.0 || v > 1.0)
+        r.fail(std::string("expected ") + what + ", got " + describe_json(r.value()));
     return v;
 }
 
@@ -40,7 +41,8 @@ render::Material read_preset(const JsonReader& r) {
     const std::string name = r.string();
     for (const Preset& p : kPresets)
         if (name == p.name) return p.material;
-    r.fail("unknown material \"" + name + "\"; presets: " + material_preset_names() +
+    r.fail("unknown material " + describe_json(r.value()) +
+           "; presets: " + material_preset_names() +
            ", or {\"roughness\": r, \"specular\": s, \"metallic\": m, \"friction\": mu, "
            "\"restitution\": e}");
 }

@@ -2,9 +2,10 @@
 // Triangle meshes of `{"type": "mesh", "file": ...}` bodies, read from Wavefront OBJ files with
 // tinyobjloader (Debian's libtinyobjloader-dev, double precision). Only the vertex positions
 // ("v") and faces ("f", polygons split into triangles) are used; normals, texture coordinates,
-// groups and materials are ignored. A file is found next to the scene file first, then among
-// the meshes bundled from assets/meshes/ (embedded in the binary, so built-in scenes need no
-// files on disk).
+// groups and materials are ignored. check_obj_lines() (obj_lines.h) judges the "v" and "f" lines
+// first: tinyobjloader reads what it cannot parse as 0. A file is found next to the scene file
+// first, then among the meshes bundled from assets/meshes/ (embedded in the binary, so built-in
+// scenes need no files on disk).
 #include "physics/mesh.h"
 #include "render/mesh_data.h"
 

@@ -18,26 +18,32 @@ std::string json_field(const std::string& field) {
     return field;
 }
 
-std::string body_label(const Scene& scene, int i) {
-    return "body " + std::to_string(i) + " \"" + scene.looks[std::size_t(i)].name + "\"";
+std::string body_label(const std::string& name, int i) {
+    return "body " + std::to_string(i) + " \"" + name + "\"";
 }
 
-// "body 3" -> "body 3 "left wall"" in physics' messages, so the user sees the names they wrote.
-std::string with_body_names(const Scene& scene, const std::string& what) {
+std::vector<std::string> body_names(const Scene& scene) {
+    std::vector<std::string> out;
+    for (const BodyLook& look : scene.looks) out.push_back(look.name);
+    return out;
+}
+
+} // namespace
+
+std::string with_body_names(const std::vector<std::string>& names, const std::string& what) {
     static const std::regex body(R"(\bbody (\d+)\b)");
     std::string out;
     auto last = what.cbegin();
     for (std::sregex_iterator it(what.begin(), what.end(), body), end; it != end; ++it) {
         const int i = std::stoi((*it)[1].str());
         out.append(last, (*it)[0].first);
-        out += i >= 0 && i < int(scene.looks.size()) ? body_label(scene, i) : (*it)[0].str();
+        out +=
+            i >= 0 && i < int(names.size()) ? body_label(names[std::size_t(i)], i) : (*it)[0].str();
         last = (*it)[0].second;
     }
     out.append(last, what.cend());
     return out;
 }
-
-} // namespace
 
 CheckedStart build_checked(const Scene& scene, double dt) {
     physics::WorldDef world = scene.world;
@@ -50,7 +56,7 @@ CheckedStart build_checked(const Scene& scene, double dt) {
         const std::string field = json_field(e.field);
         const std::string place =
             e.body < 0 ? "/world/" + field : "/bodies/" + std::to_string(e.body) + "/" + field;
-        throw SceneError(scene.source, place, with_body_names(scene, e.what()));
+        throw SceneError(scene.source, place, with_body_names(body_names(scene), e.what()));
     }
 }
 
@@ -65,8 +71,10 @@ std::vector<std::string> initial_state_warnings(const Scene& scene, const physic
                       "to %.3g m/s",
                       o.depth * 1000.0, model.contact.max_push_speed);
         out.push_back(scene.source + ": /bodies/" + std::to_string(o.b) +
-                      "/position: " + body_label(scene, o.b) + " starts interpenetrating " +
-                      body_label(scene, o.a) + numbers + " (move them apart if not intended)");
+                      "/position: " + body_label(scene.looks[std::size_t(o.b)].name, o.b) +
+                      " starts interpenetrating " +
+                      body_label(scene.looks[std::size_t(o.a)].name, o.a) + numbers +
+                      " (move them apart if not intended)");
     }
     return out;
 }

@@ -21,6 +21,10 @@ struct CheckedStart {
 // offending field, with the bodies the message mentions named as the scene names them.
 CheckedStart build_checked(const Scene& scene, double dt);
 
+// `what` (a physics message) with each "body 3" as `body 3 "left wall"`, `names` being the
+// bodies' names as the scene gives them (BodyLook::name), so the user sees the names they wrote.
+std::string with_body_names(const std::vector<std::string>& names, const std::string& what);
+
 // Warnings about the initial state that do not stop the run: pairs of bodies starting deeply
 // interpenetrated (physics::deep_initial_overlaps), each naming both bodies.
 std::vector<std::string> initial_state_warnings(const Scene& scene, const physics::Model& model,

@@ -23,8 +23,8 @@ void read_world(JsonReader r, Scene& s) {
         const std::string name = i->string();
         const auto id = physics::integrator_from_name(name);
         if (!id)
-            i->fail("unknown integrator \"" + name +
-                    "\"; valid integrators: " + physics::integrator_names());
+            i->fail("unknown integrator " + describe_json(i->value()) +
+                    "; valid integrators: " + physics::integrator_names());
         s.world.integrator = *id;
     }
     physics::ContactSettings& c = s.world.contact; // physics/contact_model.h

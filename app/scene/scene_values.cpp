@@ -21,21 +21,23 @@ glm::vec3 read_color(const JsonReader& r) {
         auto hex = [&](std::size_t at) { return std::stoi(s.substr(at, 2), nullptr, 16) / 255.0f; };
         const bool ok = s.size() == 7 && s[0] == '#' &&
                         s.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
-        if (!ok) r.fail("expected a colour \"#rrggbb\" or [r, g, b] in [0, 1], got \"" + s + "\"");
+        if (!ok)
+            r.fail("expected a colour \"#rrggbb\" or [r, g, b] in [0, 1], got " +
+                   describe_json(r.value()));
         return {hex(1), hex(3), hex(5)};
     }
     const auto c = r.vec3("a colour [r, g, b] with components in [0, 1]");
     for (double x : c)
         if (x < 0.0 || x > 1.0)
             r.fail("expected a colour [r, g, b] with components in [0, 1], got " +
-                   r.value().dump());
+                   describe_json(r.value()));
     return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
 }
 
 physics::Quat read_orientation(JsonReader r) {
     if (auto q = r.optional("quaternion")) {
         if (!q->value().is_array() || q->value().size() != 4)
-            q->fail("expected a unit quaternion [w, x, y, z], got " + q->value().dump());
+            q->fail("expected a unit quaternion [w, x, y, z], got " + describe_json(q->value()));
         double c[4];
         for (std::size_t k = 0; k < 4; ++k) c[k] = q->at(k).number("a finite number");
         const physics::Quat out(c[0], c[1], c[2], c[3]);

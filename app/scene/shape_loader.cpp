@@ -1,5 +1,6 @@
 #include "app/scene/shape_loader.h"
 
+#include "app/scene/obj_lines.h"
 #include "app/scene/scene_values.h"
 
 namespace tumble::app {
@@ -12,7 +13,7 @@ Shape read_box(JsonReader& r) {
     const JsonReader size = r.field("size");
     const Vec3 full = read_vec3(size, "box edge lengths [x, y, z] in metres");
     if (full.minCoeff() <= 0.0)
-        size.fail("expected positive box edge lengths, got " + size.value().dump());
+        size.fail("expected positive box edge lengths, got " + describe_json(size.value()));
     return Shape::box(0.5 * full);
 }
 
@@ -34,8 +35,10 @@ const std::pair<ObjMesh, std::uint32_t>& load_mesh(JsonReader file, double scale
     ObjMesh mesh;
     const auto text = find_obj_text(name, c.scene_source, mesh.origin);
     if (!text)
-        file.fail("no mesh file \"" + name +
-                  "\" next to the scene file nor among the bundled meshes (assets/meshes/)");
+        file.fail("no mesh file " + describe_json(file.value()) +
+                  " next to the scene file nor among the bundled meshes (assets/meshes/)");
+    if (auto bad = check_obj_lines(*text)) // app/scene/obj_lines.h
+        file.fail(mesh.origin + ":" + std::to_string(bad->line) + ": " + bad->what);
     auto solid = std::make_shared<physics::TriangleMesh>();
     if (auto why = parse_obj(*text, scale, *solid)) file.fail(mesh.origin + ": " + *why);
     if (auto why = physics::check_closed_mesh(*solid))
@@ -69,8 +72,9 @@ void read_shape(JsonReader r, ShapeContext& c, physics::BodyDef& b, BodyLook& lo
         b.mesh = mesh.solid;
         look.mesh_id = id;
     } else {
-        r.field("type").fail("unknown shape \"" + type +
-                             "\"; expected one of: sphere, box, plane, capsule, mesh");
+        const JsonReader t = r.field("type");
+        t.fail("unknown shape " + describe_json(t.value()) +
+               "; expected one of: sphere, box, plane, capsule, mesh");
     }
     r.finish();
 }

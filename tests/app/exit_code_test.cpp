@@ -18,7 +18,8 @@
 namespace tumble::test {
 namespace {
 
-// A book spun at 8 rad/s: explicit Euler at dt = 0.2 s overflows its angular velocity (step 43).
+// A book spun at 8 rad/s: explicit Euler at dt = 0.2 s overflows its rotational kinetic energy
+// (step 42; its angular velocity itself one step later).
 const char* kDiverging = R"({
   "format_version": 1,
   "world": {"duration": 20, "dt": 0.2, "gravity": [0, 0, 0], "integrator": "euler"},
@@ -67,8 +68,8 @@ TEST(ExitCodes, BadInputExitsTwoInEverySubcommand) {
 
 TEST(ExitCodes, ADivergedRunExitsOneNamingFileBodyAndStep) {
     check_cases({
-        {"render s.json --width 64 --height 48 -o d.mp4", 1, "s.json: body 0"},
-        {"render s.json --width 64 --height 48 -o frames/", 1, "is not finite after step 43"},
+        {"render s.json --width 64 --height 48 -o d.mp4", 1, "s.json: body 0 \"book\""},
+        {"render s.json --width 64 --height 48 -o frames/", 1, "is not finite after step 42"},
         {"simulate s.json -o s.csv", 1, "s.json: body 0"},
     });
 }
