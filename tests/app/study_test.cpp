@@ -135,8 +135,22 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
         }
     }
 
-    // The recommendation table (JSON and the end of report.md) follows from the rows.
+    // The order table's "theory" column gives each method's order on the free body, whatever the
+    // last problem of the quick grid is (a contact problem fits order 1 for everyone): the
+    // textbook orders, written here rather than read from the registry.
     const std::string report = read_text(out / "report.md");
+    for (const auto& [name, order] :
+         std::vector<std::pair<std::string, int>>{{"euler", 1},
+                                                  {"symplectic_euler", 1},
+                                                  {"rk4", 4},
+                                                  {"splitting", 2},
+                                                  {"midpoint", 2},
+                                                  {"splitting4", 4}})
+        EXPECT_NE(report.find("| " + name + " | " + std::to_string(order) + " |"),
+                  std::string::npos)
+            << name << " should have theory order " << order;
+
+    // The recommendation table (JSON and the end of report.md) follows from the rows.
     const std::string table = report.substr(report.rfind("## Recommendation"));
     ASSERT_EQ(j["recommendations"].size(), 3 * problems.size());
     for (const auto& rec : j["recommendations"]) {
