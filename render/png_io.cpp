@@ -141,16 +141,22 @@ void write_png(const fs::path& path, const Image& image, const PngWriteOptions& 
     const int level = std::clamp(options.level, 0, 9);
     LibpngError libpng_error;
     std::string stb_error;
+    errno = 0;
     const bool encoded = options.encoder == PngEncoder::libpng
                              ? encode_libpng(file.get(), image, level, &libpng_error)
                              : encode_stb(file.get(), image, level, &stb_error);
+    const int encode_error = errno; // libpng's "Write Error" comes from a failed fwrite
     const int close_status = std::fclose(file.release()); // flushes: may report a full disk
     const int close_error = errno;
     if (!encoded || close_status != 0) {
         std::string why = std::strerror(close_error);
-        if (!encoded) why = options.encoder == PngEncoder::libpng ? libpng_error.text : stb_error;
-        throw PngError("cannot write '" + path.string() + "' (" + to_string(options.encoder) +
-                       "): " + why);
+        if (!encoded) {
+            why = options.encoder == PngEncoder::libpng ? libpng_error.text : stb_error;
+            if (encode_error != 0 && options.encoder == PngEncoder::libpng)
+                why += std::string(": ") + std::strerror(encode_error); // e.g. No space left
+        }
+        const std::string reason = why + " (" + to_string(options.encoder) + ")";
+        throw PngError("cannot write '" + path.string() + "': " + reason, reason);
     }
     try {
         atomic.commit();

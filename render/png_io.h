@@ -11,11 +11,16 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace tumble::render {
 
+// "cannot write 'path': reason". `reason` alone lets a caller that wrote through a temporary file
+// name the file the user asked for instead.
 struct PngError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit PngError(const std::string& what, std::string reason = "")
+        : std::runtime_error(what), reason(reason.empty() ? what : std::move(reason)) {}
+    std::string reason;
 };
 
 enum class PngEncoder {

@@ -136,8 +136,8 @@ void PngStillSink::write(const Image& image) {
     try {
         // write_png is itself atomic, so the temporary file is never seen half-written either.
         write_png(file_.temp_path(), image, options_.png);
-    } catch (const PngError& e) {
-        throw SinkError(e.what());
+    } catch (const PngError& e) { // named as the user named it, not by its temporary name
+        throw SinkError("cannot write '" + describe() + "': " + e.reason);
     }
     ++frames_;
 }

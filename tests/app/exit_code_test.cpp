@@ -87,18 +87,21 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
     struct Full {
         const char* args;
         const char* leaves_no; // an output that must not exist afterwards
+        const char* named;     // the message names the output as the user gave it
     };
     for (const Full& c : std::vector<Full>{
-             {"render --duration 2 --width 320 --height 180 -o v.mp4 -q", "v.mp4"},
-             {"render --frame 0 --width 1280 --height 720 -o big.png -q", "big.png"},
-             {"simulate -o s.csv -q", "s.csv"},
-             {"diff a.png b.png --max-different 0 -o d.png", "d.png"},
-             {"bench-render default-preview --quick --repeats 1 --csv r.csv", "r.csv"},
+             {"render --duration 2 --width 320 --height 180 -o v.mp4 -q", "v.mp4", "'v.mp4'"},
+             {"render --frame 0 --width 1280 --height 720 -o big.png -q", "big.png", "'big.png'"},
+             {"simulate -o s.csv -q", "s.csv", "s.csv"},
+             {"diff a.png b.png --max-different 0 -o d.png", "d.png", "'d.png'"},
+             {"bench-render default-preview --quick --repeats 1 --csv r.csv", "r.csv", "bench.mp4"},
          }) {
         SCOPED_TRACE(c.args);
         const CliResult r = run_full(c.args);
         EXPECT_EQ(r.exit_code, 1) << r.err;
         EXPECT_NE(r.err.find("tumble: error: "), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(c.named), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find(".partial"), std::string::npos) << "names a temporary file: " << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / c.leaves_no));
         for (const std::string& f : files_in(dir))
             EXPECT_EQ(f.find(".partial"), std::string::npos) << f << " left behind";
