@@ -1,5 +1,7 @@
 #include "io/atomic_file.h"
 
+#include "io/temporary_files.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -62,26 +64,47 @@ bool ensure_writable_directory(const fs::path& dir) {
 }
 
 AtomicFile::AtomicFile(fs::path final_path)
-    : final_(std::move(final_path)), temp_(temporary_path_for(final_)) {}
+    : final_(std::move(final_path)), target_(resolve_output(final_)),
+      temp_(streaming() ? target_.path : temporary_path_for(target_.path)) {
+    if (!streaming()) register_temporary(temp_.c_str());
+}
 
 void AtomicFile::commit() {
+    commit_as(target_.path);
+}
+
+void AtomicFile::commit_as(const fs::path& other) {
     if (done_) throw FileError("'" + final_.string() + "' was already committed or discarded");
+    if (streaming()) {
+        committed_ = done_ = true;
+        return;
+    }
+    // The destination was checked when this file was opened; a run takes a while, so check
+    // again: rename(2) would replace a device node or a FIFO as readily as a file.
+    const std::string kind = describe_file_kind(other);
+    if (!kind.empty() && kind != "a regular file" && kind != "a symbolic link") {
+        discard();
+        throw FileError("cannot write '" + other.string() + "': it is now " + kind +
+                        ", which Tumble never replaces");
+    }
     std::error_code ec;
-    fs::rename(temp_, final_, ec);
+    fs::rename(temp_, other, ec);
     if (ec) {
         discard();
-        throw FileError("cannot rename '" + temp_.string() + "' to '" + final_.string() +
+        throw FileError("cannot rename '" + temp_.string() + "' to '" + other.string() +
                         "': " + ec.message());
     }
-    committed_ = true;
-    done_ = true;
+    unregister_temporary(temp_.c_str());
+    committed_ = done_ = true;
 }
 
 void AtomicFile::discard() noexcept {
     if (done_) return;
+    done_ = true;
+    if (streaming()) return; // a pipe keeps what it was given; it is never removed
     std::error_code ec;
     fs::remove(temp_, ec); // a file that was never created is fine
-    done_ = true;
+    unregister_temporary(temp_.c_str());
 }
 
 } // namespace tumble::io

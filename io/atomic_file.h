@@ -4,7 +4,15 @@
 // so a reader (or a user after Ctrl-C or a crash) sees either the old file, the complete new one,
 // or nothing, never a half-written file. Temporary names start with '.' so they stay out of
 // directory listings and globs like frames/*.png, and carry the process id so two processes
-// writing the same output do not trample each other's temporary file.
+// writing the same output do not trample each other's temporary file (and a later run can tell
+// a dead process's leftovers: io/temporary_files.h).
+//
+// What the final name is decides how it is written (io/output_target.h): a new path or a regular
+// file is replaced as above; a FIFO or standard output is streamed into in place and never
+// removed; anything else (a device, a directory) is refused before anything is written.
+#include "io/output_target.h"
+
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -25,27 +33,38 @@ bool ensure_writable_directory(const std::filesystem::path& dir);
 
 // Owns one temporary file until commit() renames it to the final name. If neither commit() nor
 // discard() ran, the destructor deletes the temporary file, so an exception between creating and
-// finishing a file cleans up after itself.
+// finishing a file cleans up after itself. While it exists, a second Ctrl-C deletes it too.
 class AtomicFile {
   public:
+    // Throws OutputRefused (bad input) when `final_path` is something Tumble must not replace.
     explicit AtomicFile(std::filesystem::path final_path);
     ~AtomicFile() { discard(); }
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
 
-    // Where to write the contents (the caller opens, writes and closes it).
+    // Where to write the contents (the caller opens, writes and closes it): the temporary file,
+    // or for a stream the FIFO or /dev/stdout itself.
     const std::filesystem::path& temp_path() const { return temp_; }
+    // The output as the user named it (for messages).
     const std::filesystem::path& final_path() const { return final_; }
+    bool streaming() const { return target_.kind == OutputKind::kStream; }
+    bool standard_output() const { return target_.standard_output; }
+    // fopen(temp_path(), mode): a stream is appended to (never truncated: `>> log` stays whole).
+    const char* fopen_mode() const { return streaming() ? "ab" : "wb"; }
 
-    // Renames the temporary file to the final name, replacing any file already there. Throws
-    // FileError (and deletes the temporary file) when the rename fails.
+    // Renames the temporary file to the final name, replacing any regular file already there
+    // (checked again now: never a device or pipe that appeared meanwhile). Throws FileError (and
+    // deletes the temporary file) when it cannot. Nothing to do for a stream.
     void commit();
-    // Deletes the temporary file if it still exists. Never throws.
+    // The same, but into `other` instead of the final name (e.g. a name saying "interrupted").
+    void commit_as(const std::filesystem::path& other);
+    // Deletes the temporary file if it still exists (never a stream). Never throws.
     void discard() noexcept;
     bool committed() const { return committed_; }
 
   private:
     std::filesystem::path final_;
+    OutputTarget target_;
     std::filesystem::path temp_;
     bool committed_ = false;
     bool done_ = false; // committed or discarded: nothing left to clean up
