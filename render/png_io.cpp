@@ -132,7 +132,7 @@ void check_writable_image(const fs::path& path, const Image& image) {
 void write_png(const fs::path& path, const Image& image, const PngWriteOptions& options) {
     check_writable_image(path, image);
     io::AtomicFile atomic(path); // deletes the temporary file on every early exit
-    File file(std::fopen(atomic.temp_path().c_str(), "wb"));
+    File file(std::fopen(atomic.temp_path().c_str(), atomic.fopen_mode()));
     if (!file) {
         const int error = errno; // before anything else can change it
         throw PngError("cannot write '" + path.string() + "': cannot create '" +

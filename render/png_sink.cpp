@@ -119,7 +119,7 @@ void PngSequenceSink::abort() noexcept {
 PngStillSink::PngStillSink(const fs::path& path, const SinkOptions& options)
     : file_(path), options_(options) {
     try {
-        io::ensure_writable_directory(path.parent_path());
+        if (!file_.streaming()) io::ensure_writable_directory(path.parent_path());
     } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + path.string() + "': " + e.what());
     }

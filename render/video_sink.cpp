@@ -105,7 +105,7 @@ struct VideoSink::Encoder {
         }
     }
     void open_codec(const SinkOptions& o);
-    void open_container(const fs::path& temp);
+    void open_container(const fs::path& temp, bool stream_out);
     void open_scaler(const SinkOptions& o);
     void encode(const AVFrame* frame); // nullptr drains the encoder
 };
@@ -165,9 +165,10 @@ void VideoSink::Encoder::open_codec(const SinkOptions& o) {
     check(opened, what.c_str());
 }
 
-void VideoSink::Encoder::open_container(const fs::path& temp) {
+void VideoSink::Encoder::open_container(const fs::path& temp, bool stream_out) {
     // "file:" stops libavformat from reading a colon in the name as a protocol ("a:b.mp4"), and
-    // the muxer is named because the temporary name does not end in .mp4.
+    // the muxer is named because the temporary name does not end in .mp4. A pipe is written
+    // through the same protocol; it only cannot seek (see the movflags below).
     const std::string url = "file:" + temp.string();
     AVFormatContext* f = nullptr;
     check(avformat_alloc_output_context2(&f, nullptr, kind.muxer, url.c_str()),
@@ -185,8 +186,12 @@ void VideoSink::Encoder::open_container(const fs::path& temp) {
     check(avio_open(&f->pb, url.c_str(), AVIO_FLAG_WRITE), "creating the file");
     AVDictionary* settings = nullptr;
     // faststart: at the end, rewrite the file with the index ("moov") first. That second pass
-    // reopens the file by its name, which is why the name is set above.
-    if (!kind.vp9) av_dict_set(&settings, "movflags", "+faststart", 0);
+    // reopens the file by its name, which is why the name is set above. A pipe (a FIFO, standard
+    // output) cannot be rewritten or seeked, so it gets fragmented MP4 instead: an empty index
+    // first, then self-contained fragments, one per keyframe; players read it as it arrives.
+    if (!kind.vp9)
+        av_dict_set(&settings, "movflags",
+                    stream_out ? "+frag_keyframe+empty_moov+default_base_moof" : "+faststart", 0);
     const int written = avformat_write_header(f, &settings);
     av_dict_free(&settings);
     check(written, "writing the file header");
@@ -235,7 +240,7 @@ VideoSink::VideoSink(const fs::path& output, const SinkOptions& options)
     const Format kind = format_of(output);
     check_options(output.string(), options, kind);
     try {
-        io::ensure_writable_directory(output.parent_path());
+        if (!file_.streaming()) io::ensure_writable_directory(output.parent_path());
     } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + output.string() + "': " + e.what());
     }
@@ -244,7 +249,7 @@ VideoSink::VideoSink(const fs::path& output, const SinkOptions& options)
     encoder_->kind = kind;
     try {
         encoder_->open_codec(options);
-        encoder_->open_container(file_.temp_path());
+        encoder_->open_container(file_.temp_path(), file_.streaming());
         encoder_->open_scaler(options);
     } catch (...) {
         abort();
