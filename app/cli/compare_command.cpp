@@ -66,10 +66,10 @@ int run_compare(const RenderCommand& cmd) {
     const std::int64_t first = cmd.frame.value_or(0), last = cmd.frame.value_or(tl.frames - 1);
     tune_allocator_for_rendering();
     SideBySide tiles(scene, methods, tl, cmd.common.threads, first, last);
+    InterruptGuard guard; // from before the output exists: no signal can leave it half-written
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output_name(cmd, scene, "-compare"));
     render::Image frame;
-    InterruptGuard guard;
     Progress progress("comparing", last - first + 1, cmd.common.quiet);
     std::int64_t written = 0;
     for (std::int64_t k = first; k <= last && !InterruptGuard::requested(); ++k) {

@@ -92,10 +92,11 @@ int run_render(const RenderCommand& cmd) {
     if (const std::string note = threads_note(sim, cmd.common.threads);
         !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
-    // On an exception the sink's destructor deletes the partial output.
+    // From before the output exists, so no signal can leave it half-written; on an exception the
+    // sink's destructor deletes the partial output.
+    InterruptGuard guard;
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output_name(cmd, scene));
-    InterruptGuard guard;
     const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
     const auto t0 = std::chrono::steady_clock::now();
     const RunResult r = render_frames(scene, tl, sim, *sink, cmd.frame.value_or(0),

@@ -1,5 +1,7 @@
 #include "app/cli/render_setup.h"
 
+#include "app/cli/stale_temporaries.h"
+
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
 
@@ -69,6 +71,7 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
     options.fps = scene.render.fps;
     options.crf = cmd.crf;
     options.preset = video_preset(cmd);
+    remove_stale_temporaries_for(output, cmd.common.quiet);
     try {
         return render::open_sink(output, options);
     } catch (const render::SinkError& e) {

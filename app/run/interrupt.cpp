@@ -1,5 +1,7 @@
 #include "app/run/interrupt.h"
 
+#include "io/temporary_files.h"
+
 #include <atomic>
 #include <csignal>
 #include <unistd.h>
@@ -12,8 +14,26 @@ namespace {
 std::atomic<int> g_signal{0};
 struct sigaction g_old_int, g_old_term;
 
+void say(const char* text, std::size_t size) {
+    const ssize_t ignored = ::write(STDERR_FILENO, text, size);
+    (void)ignored;
+}
+
+// The second signal: leave now, but not before deleting the temporary files of unfinished
+// outputs (unlink and write are async-signal-safe; nothing here allocates or locks).
+[[noreturn]] void leave_at_once(int sig) {
+    io::remove_registered_temporaries();
+    static const char message[] = "\ntumble: interrupted again: stopped at once; outputs in "
+                                  "progress were deleted\n";
+    say(message, sizeof message - 1);
+    _exit(128 + sig);
+}
+
 extern "C" void on_signal(int sig) {
-    if (g_signal.exchange(sig) != 0) _exit(128 + sig); // second signal: leave now
+    if (g_signal.exchange(sig) != 0) leave_at_once(sig);
+    static const char message[] = "\ntumble: interrupted: finishing what is done so far (again to "
+                                  "quit at once)\n";
+    say(message, sizeof message - 1);
 }
 
 } // namespace

@@ -4,6 +4,8 @@
 
 #include "physics/diagnostics.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -17,9 +19,19 @@ std::string csv_quote(const std::string& s) {
     return out + "\"";
 }
 
-std::FILE* open_or_throw(const std::filesystem::path& temp, const std::filesystem::path& final) {
-    std::FILE* f = std::fopen(temp.c_str(), "w");
-    if (!f) throw std::runtime_error(final.string() + ": cannot create the file");
+std::FILE* open_or_throw(const io::AtomicFile& file) {
+    if (!file.streaming()) {
+        try {
+            io::ensure_writable_directory(file.final_path().parent_path());
+        } catch (const io::FileError& e) {
+            throw io::BadInput(e.what()); // the output named a folder that cannot be used
+        }
+    }
+    std::FILE* f = std::fopen(file.temp_path().c_str(), file.fopen_mode());
+    if (!f) {
+        throw std::runtime_error("cannot write '" + file.final_path().string() +
+                                 "': " + std::strerror(errno));
+    }
     return f;
 }
 
@@ -30,17 +42,27 @@ std::string diagnostics_path_for(const std::string& states_path) {
     return (p.parent_path() / (p.stem().string() + ".diagnostics.csv")).string();
 }
 
-TrajectoryWriter::TrajectoryWriter(const std::string& states_path, const Scene& scene)
-    : scene_(scene), states_(states_path), diags_(diagnostics_path_for(states_path)) {
-    try {
-        io::ensure_writable_directory(std::filesystem::path(states_path).parent_path());
-    } catch (const io::FileError& e) {
-        throw io::BadInput(e.what()); // the output named a folder that cannot be used
-    }
-    states_file_ = open_or_throw(states_.temp_path(), states_.final_path());
-    diags_file_ = open_or_throw(diags_.temp_path(), diags_.final_path());
+std::string interrupted_path_for(const std::string& path) {
+    std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + ".interrupted" + p.extension().string()))
+        .string();
+}
+
+TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
+                                   const std::string& diagnostics_path, const Scene& scene)
+    : scene_(scene), states_(states_path) {
+    if (!diagnostics_path.empty()) diags_.emplace(diagnostics_path);
+    // A run cut short: "s.interrupted.csv" and, beside it, "s.interrupted.diagnostics.csv"
+    // (or "d.interrupted.csv" for diagnostics the user named d.csv).
+    interrupted_diagnostics_ = diagnostics_path == diagnostics_path_for(states_path)
+                                   ? diagnostics_path_for(interrupted_path_for(states_path))
+                                   : interrupted_path_for(diagnostics_path);
+    states_file_ = open_or_throw(states_);
     std::fputs("step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n", states_file_);
-    std::fputs("step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz\n", diags_file_);
+    if (diags_) {
+        diags_file_ = open_or_throw(*diags_);
+        std::fputs("step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz\n", diags_file_);
+    }
 }
 
 TrajectoryWriter::~TrajectoryWriter() {
@@ -61,6 +83,7 @@ void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
                      p.position.y(), p.position.z(), q.w(), q.x(), q.y(), q.z(), s.v[i].x(),
                      s.v[i].y(), s.v[i].z(), s.w[i].x(), s.w[i].y(), s.w[i].z());
     }
+    if (!diags_file_) return;
     const physics::Diagnostics d = physics::diagnose(m, s);
     const physics::Vec3 &P = d.linear_momentum, &L = d.angular_momentum;
     std::fprintf(diags_file_, "%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
@@ -68,15 +91,34 @@ void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
                  L.z());
 }
 
-void TrajectoryWriter::finish() {
+std::vector<std::string> TrajectoryWriter::close_and_commit(bool interrupted) {
     const bool states_ok = std::fclose(states_file_) == 0;
-    const bool diags_ok = std::fclose(diags_file_) == 0;
-    const bool ok = states_ok && diags_ok;
+    const bool diags_ok = !diags_file_ || std::fclose(diags_file_) == 0;
     states_file_ = diags_file_ = nullptr;
-    if (!ok)
-        throw std::runtime_error(states_.final_path().string() + ": write failed (disk full?)");
-    states_.commit();
-    diags_.commit();
+    if (!states_ok || !diags_ok)
+        throw std::runtime_error("cannot write '" + states_.final_path().string() +
+                                 "': write failed (disk full?)");
+    std::vector<std::string> written;
+    for (io::AtomicFile* file : {&states_, diags_ ? &*diags_ : nullptr}) {
+        if (!file) continue;
+        std::string name = file->final_path().string();
+        if (interrupted && !file->streaming()) {
+            name = file == &states_ ? interrupted_path_for(name) : interrupted_diagnostics_;
+            file->commit_as(name);
+        } else {
+            file->commit();
+        }
+        written.push_back(file->standard_output() ? "standard output" : name);
+    }
+    return written;
+}
+
+std::vector<std::string> TrajectoryWriter::finish() {
+    return close_and_commit(false);
+}
+
+std::vector<std::string> TrajectoryWriter::finish_interrupted() {
+    return close_and_commit(true);
 }
 
 } // namespace tumble::app

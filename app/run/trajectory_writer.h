@@ -4,35 +4,50 @@
 //       step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz
 //     x: body origin (m, world); q: body orientation (body -> world); v: centre-of-mass velocity
 //     (m/s, world); w: angular velocity (rad/s, world). %.17g: doubles round-trip exactly.
-//   <stem>.diagnostics.csv       one row per sampled step:
+//   <diagnostics>                one row per sampled step (by default <stem>.diagnostics.csv):
 //       step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz
 //     energies in J, P in kg m/s, L (world, about the origin) in kg m^2/s.
+// An output may be "-" (standard output) or a FIFO: rows then stream out as they are computed
+// (io/output_target.h). A run cut short is kept apart from a complete one: finish_interrupted()
+// stores it as <stem>.interrupted.csv, so an existing complete file of the same name survives.
 #include "app/scene/scene.h"
 #include "io/atomic_file.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace tumble::app {
 
 class TrajectoryWriter {
   public:
-    TrajectoryWriter(const std::string& states_path, const Scene& scene);
+    // An empty `diagnostics_path` writes no diagnostics.
+    TrajectoryWriter(const std::string& states_path, const std::string& diagnostics_path,
+                     const Scene& scene);
     ~TrajectoryWriter();
     void write(const physics::Model& model, const physics::State& state);
-    void finish(); // closes and renames both files into place
-    std::string states_path() const { return states_.final_path().string(); }
-    std::string diagnostics_path() const { return diags_.final_path().string(); }
+    // Closes both files and renames them into place; returns the paths written.
+    std::vector<std::string> finish();
+    // The same for a run that stopped early: into interrupted_path_for(...) names, leaving files
+    // of the complete names untouched (streams just end).
+    std::vector<std::string> finish_interrupted();
 
   private:
+    std::vector<std::string> close_and_commit(bool interrupted);
     const Scene& scene_;
-    io::AtomicFile states_, diags_;
+    io::AtomicFile states_;
+    std::optional<io::AtomicFile> diags_;
+    std::string interrupted_diagnostics_; // where finish_interrupted() puts the diagnostics
     std::FILE* states_file_ = nullptr;
     std::FILE* diags_file_ = nullptr;
 };
 
+// "out/run.csv" -> "out/run.diagnostics.csv"
 std::string diagnostics_path_for(const std::string& states_path);
+// "out/run.csv" -> "out/run.interrupted.csv"
+std::string interrupted_path_for(const std::string& path);
 
 } // namespace tumble::app

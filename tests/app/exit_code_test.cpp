@@ -7,6 +7,7 @@
 // takes a minute before the first write) and `explain` and `scenes`, which run nothing that can
 // fail but their input.
 #include "app/cli_runner.h"
+#include "app/interrupt_runner.h"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,27 @@ TEST(ExitCodes, ADivergedRunExitsOneNamingFileBodyAndStep) {
     });
 }
 
+// A failed run keeps what was there: the output of an earlier, complete run survives a run to
+// the same name that diverges or meets a full disk.
+TEST(ExitCodes, AFailedRunLeavesAnExistingFileOfTheSameNameUntouched) {
+    const auto dir = scratch_dir();
+    write_text(dir / "s.json", kDiverging);
+    const std::vector<std::string> outputs = {"d.mp4", "s.csv", "s.diagnostics.csv", "v.mp4"};
+    for (const std::string& name : outputs) write_text(dir / name, "kept: " + name);
+    for (const std::string& args : {
+             std::string("\"$TUMBLE\" render s.json --width 64 --height 48 -o d.mp4 -q"),
+             std::string("\"$TUMBLE\" simulate s.json -o s.csv -q"),
+             std::string("trap '' XFSZ; ulimit -f 4; exec \"$TUMBLE\" render --duration 2 "
+                         "--width 320 --height 180 -o v.mp4 -q"),
+         }) {
+        SCOPED_TRACE(args);
+        EXPECT_EQ(run_shell(dir, args).exit_code, 1);
+    }
+    for (const std::string& name : outputs) EXPECT_EQ(read_text(dir / name), "kept: " + name);
+    for (const std::string& f : files_in(dir))
+        EXPECT_EQ(f.find(".partial"), std::string::npos) << f << " left behind";
+}
+
 TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
     const auto dir = scratch_dir();
     ASSERT_EQ(run_tumble(dir, "render --frame 0 --width 320 --height 180 -o a.png -q").exit_code,
@@ -106,33 +128,6 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
         for (const std::string& f : files_in(dir))
             EXPECT_EQ(f.find(".partial"), std::string::npos) << f << " left behind";
     }
-}
-
-// Starts `tumble <args>` in `dir`, waits until a file starting with `partial_prefix` has bytes
-// (progress, not a wall-clock guess; 60 s at most), sends `signal` and returns the exit code.
-int interrupt_when_writing(const std::filesystem::path& dir, const std::string& args,
-                           const std::string& partial_prefix, int signal) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(dir.c_str()) != 0) _exit(99);
-        if (!freopen("stderr.txt", "w", stderr)) _exit(97);
-        execl("/bin/sh", "sh", "-c", ("exec " + std::string(TUMBLE_EXE) + " " + args).c_str(),
-              static_cast<char*>(nullptr));
-        _exit(98);
-    }
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    auto writing = [&] {
-        for (const auto& e : std::filesystem::directory_iterator(dir))
-            if (e.path().filename().string().starts_with(partial_prefix) && e.file_size() > 0)
-                return true;
-        return false;
-    };
-    while (!writing() && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    kill(pid, signal);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 TEST(ExitCodes, InterruptedRunsExitWith128PlusTheSignal) {
