@@ -179,6 +179,12 @@ Image read_png(const fs::path& path) {
     }
     std::rewind(file.get());
     int width = 0, height = 0, channels_in_file = 0;
+    if (stbi_info_from_file(file.get(), &width, &height, &channels_in_file) &&
+        static_cast<long long>(width) * height > kMaxReadPixels) {
+        throw PngError("'" + path.string() + "' is " + std::to_string(width) + "x" +
+                       std::to_string(height) + " pixels; Tumble reads PNGs of at most " +
+                       std::to_string(kMaxReadPixels >> 20) + " Mpx");
+    }
     // Asking for 3 channels makes stb expand gray and palettes and drop alpha.
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_file(file.get(), &width, &height, &channels_in_file, 3), stbi_image_free);

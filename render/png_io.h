@@ -44,7 +44,10 @@ void write_png(const std::filesystem::path& path, const Image& image,
 
 // Reads any PNG (gray, palette, RGB, with or without alpha, 8 or 16 bits per channel) as 8-bit
 // RGB. Alpha is dropped, not composited: the result is the stored colour. 16-bit channels keep
-// their high byte. Throws PngError naming the file when it is missing or not a valid PNG.
+// their high byte. Throws PngError naming the file when it is missing or not a valid PNG, or
+// when its header declares more than kMaxReadPixels (checked before the pixels are allocated:
+// a 100-byte PNG can claim to be 10^9 pixels).
+inline constexpr long long kMaxReadPixels = 64LL << 20; // 64 Mpx: 192 MB as RGB
 Image read_png(const std::filesystem::path& path);
 
 } // namespace tumble::render

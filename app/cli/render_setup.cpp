@@ -26,10 +26,12 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     if (cmd.overlay) rs.overlay = *cmd.overlay;
     if (cmd.axes) rs.axes = *cmd.axes;
     if (cmd.vectors) rs.vectors = *cmd.vectors;
-    if (rs.width < 16 || rs.height < 16)
+    if (rs.width < rs.kMinSide || rs.height < rs.kMinSide || rs.width > rs.kMaxWidth ||
+        rs.height > rs.kMaxHeight)
         throw SceneError("--width/--height",
                          std::to_string(rs.width) + "x" + std::to_string(rs.height),
-                         "expected at least 16x16 pixels");
+                         "expected 16x16 to 7680x4320 pixels (8K UHD, the largest frame Tumble "
+                         "draws)");
     if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
 }
 

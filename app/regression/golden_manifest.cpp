@@ -1,21 +1,18 @@
 #include "app/regression/golden_manifest.h"
 
+#include "app/scene/input_file.h"
 #include "app/scene/json_reader.h"
+#include "app/scene/scene.h"
 #include "io/atomic_file.h"
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 namespace tumble::app {
 namespace {
 
 std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) throw SceneError(p.string(), "file", "cannot open the golden manifest");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return read_input_file(p, "golden manifest");
 }
 
 render::CompareOptions read_compare(JsonReader r, render::CompareOptions c) {
@@ -80,8 +77,11 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& path) {
         GoldenEntry g;
         g.scene = e.field("scene").string();
         g.frame = e.field("frame").integer(0, 1 << 30, "a frame index");
-        if (auto w = e.optional("width")) g.width = w->integer(16, 7680, "an image width");
-        if (auto h = e.optional("height")) g.height = h->integer(16, 4320, "an image height");
+        using RS = RenderSettings;
+        if (auto w = e.optional("width"))
+            g.width = w->integer(RS::kMinSide, RS::kMaxWidth, "an image width");
+        if (auto h = e.optional("height"))
+            g.height = h->integer(RS::kMinSide, RS::kMaxHeight, "an image height");
         if (auto o = e.optional("overlay")) g.overlay = o->boolean();
         g.compare = defaults;
         if (auto c = e.optional("compare")) g.compare = read_compare(*c, defaults);

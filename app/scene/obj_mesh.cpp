@@ -1,12 +1,12 @@
 #include "app/scene/obj_mesh.h"
 
+#include "app/scene/input_file.h"
+
 #include "app/scene/assets.h"
 
 #include <tiny_obj_loader.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace tumble::app {
 
@@ -41,12 +41,9 @@ std::optional<std::string> find_obj_text(const std::string& file, const std::str
     if (!scene_source.starts_with("builtin:")) {
         const fs::path path = fs::path(scene_source).parent_path() / file;
         std::error_code ec;
-        if (fs::is_regular_file(path, ec)) {
-            std::ifstream in(path, std::ios::binary);
-            std::ostringstream text;
-            text << in.rdbuf();
+        if (fs::exists(path, ec)) { // a FIFO or device too: read_input_file says what is wrong
             origin = path.string();
-            return text.str();
+            return read_input_file(path, "OBJ mesh");
         }
     }
     if (file.find('/') != std::string::npos) return std::nullopt;

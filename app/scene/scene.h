@@ -22,6 +22,10 @@ struct BodyLook {
 };
 
 struct RenderSettings {
+    // The largest frame Tumble draws, 8K UHD (checked in scene files, goldens and on the command
+    // line before anything is allocated): one RGB frame is then 100 MB, and the pipeline holds a
+    // few frames, the multisampled framebuffer and the encoder's lookahead besides.
+    static constexpr int kMinSide = 16, kMaxWidth = 7680, kMaxHeight = 4320;
     int width = 1280;
     int height = 720;
     int fps = 60;

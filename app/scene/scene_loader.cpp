@@ -2,12 +2,12 @@
 #include "app/scene/assets.h"
 #include "app/scene/body_loader.h"
 #include "app/scene/scene.h"
+
+#include "app/scene/input_file.h"
 #include "app/scene/scene_check.h"
 #include "app/scene/scene_values.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace tumble::app {
 namespace {
@@ -51,9 +51,10 @@ void read_light(JsonReader r, render::Light& l) {
 }
 
 void read_render(JsonReader r, RenderSettings& rs) {
-    if (auto w = r.optional("width")) rs.width = w->integer(16, 7680, "an image width in pixels");
+    if (auto w = r.optional("width"))
+        rs.width = w->integer(rs.kMinSide, rs.kMaxWidth, "an image width in pixels");
     if (auto h = r.optional("height"))
-        rs.height = h->integer(16, 4320, "an image height in pixels");
+        rs.height = h->integer(rs.kMinSide, rs.kMaxHeight, "an image height in pixels");
     if (auto f = r.optional("fps")) rs.fps = f->integer(1, 1000, "frames per second");
     if (auto c = r.optional("camera")) read_camera_rig(*c, rs.camera);
     if (auto l = r.optional("light")) read_light(*l, rs.light);
@@ -118,13 +119,8 @@ std::vector<std::string> builtin_scene_names() {
 Scene load_scene_argument(const std::string& argument) {
     const std::string arg = argument.empty() ? "default" : argument;
     std::error_code ec;
-    if (std::filesystem::is_regular_file(arg, ec)) {
-        std::ifstream in(arg, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in.good() && !in.eof()) throw SceneError(arg, "file", "cannot read the file");
-        return load_scene(text.str(), arg);
-    }
+    if (std::filesystem::is_regular_file(arg, ec))
+        return load_scene(read_input_file(arg, "scene"), arg);
     const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
     const std::string_view builtin = assets::find(std::filesystem::path(file).filename().string());
     if (!builtin.empty() && arg.find('/') == std::string::npos)
