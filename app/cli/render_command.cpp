@@ -8,6 +8,7 @@
 #include "app/cli/render_setup.h"
 #include "app/cli/subcommand.h"
 #include "app/run/interrupt.h"
+#include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
@@ -76,9 +77,9 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
                  "tumble: integrator %s, %d bodies, t_end = %.6g s, energy %.9g J -> %.9g J\n",
                  std::string(physics::integrator_info(sim.model.integrator).name).c_str(),
                  sim.model.body_count(), sim.state.time(sim.model), d0.energy(), d1.energy());
-    std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s)\n",
+    std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s), %s\n",
                  static_cast<long long>(r.frames), r.frames == 1 ? "" : "s", wall,
-                 wall > 0 ? r.frames / wall : 0.0);
+                 wall > 0 ? r.frames / wall : 0.0, describe_peak_memory().c_str());
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 

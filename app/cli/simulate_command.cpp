@@ -6,6 +6,7 @@
 #include "app/cli/stale_temporaries.h"
 #include "app/cli/subcommand.h"
 #include "app/run/interrupt.h"
+#include "app/run/peak_memory.h"
 #include "app/run/progress.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
@@ -43,9 +44,9 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
     if (cmd.common.quiet) return;
     std::string files;
     for (const std::string& w : written) files += (files.empty() ? "" : " and ") + w;
-    std::fprintf(stderr, "tumble: %s: %s%lld steps of %.9g s; wrote %s\n", scene.source.c_str(),
+    std::fprintf(stderr, "tumble: %s: %s%lld steps of %.9g s, %s; wrote %s\n", scene.source.c_str(),
                  interrupted ? "interrupted after " : "", static_cast<long long>(sim.state.step), h,
-                 files.c_str());
+                 describe_peak_memory().c_str(), files.c_str());
     if (interrupted && cmd.output != "-")
         std::fprintf(stderr,
                      "tumble: a trajectory cut short is kept apart: '%s' is as it was before\n",
