@@ -11,6 +11,7 @@
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/run/trajectory_writer.h"
+#include "io/bad_input.h"
 
 #include <cstdio>
 #include <memory>
@@ -29,6 +30,9 @@ struct SimulateCommand {
 // Diagnostics go beside the states, unless the states go to standard output (then only where
 // --diagnostics says: two tables cannot share one stream).
 std::string diagnostics_output(const SimulateCommand& cmd) {
+    if (cmd.diagnostics && *cmd.diagnostics == cmd.output)
+        throw io::BadInput("--diagnostics " + cmd.output +
+                           ": the states already go there; two tables cannot share one output");
     if (cmd.diagnostics) return *cmd.diagnostics == "none" ? "" : *cmd.diagnostics;
     if (cmd.output == "-") {
         if (!cmd.common.quiet)

@@ -58,6 +58,10 @@ TEST(OutputKinds, DiagnosticsOfAStreamGoOnlyWhereAsked) {
     r = run_tumble(dir, kRun + " -o - --diagnostics d.csv");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(read_text(dir / "d.csv").starts_with("step,t,kinetic,potential,energy"));
+    r = run_tumble(dir, kRun + " -o - --diagnostics -");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("two tables cannot share one output"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
 }
 
 TEST(OutputKinds, AFifoIsWrittenInPlaceAndStaysAFifo) {
