@@ -212,6 +212,11 @@ nlohmann::json parse_text(const std::string& text, const std::string& file) {
 } // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& file) {
+    // nlohmann's parser takes a NUL byte for the end of the text, so "{...}\0anything" would load,
+    // and the duplicate-key scan, which trusts the parser, would run off the end of an unclosed
+    // string after the NUL. JSON has no raw NUL byte (RFC 8259).
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+        throw SceneError(file, line_column(text, nul), "invalid JSON: a NUL byte (a binary file?)");
     check_json_nesting(text, file); // before any tree is built or walked
     nlohmann::json root = parse_text(text, file);
     check_duplicate_keys(text, file); // the parser kept the last of them silently
