@@ -4,6 +4,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <charconv>
 #include <cmath>
 
 namespace tumble::app {
@@ -111,10 +112,13 @@ void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names
             rig.follow_body = int(i);
             return;
         }
+    // A body index: digits only (from_chars takes no sign, space or "+" for an unsigned), and
+    // too many of them is out of range, not an exception (std::stoul threw std::out_of_range).
     const std::string& n = rig.follow_name;
-    if (!n.empty() && n.find_first_not_of("0123456789") == std::string::npos &&
-        std::stoul(n) < names.size()) {
-        rig.follow_body = int(std::stoul(n));
+    std::size_t index = 0;
+    const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), index);
+    if (!n.empty() && ec == std::errc() && end == n.data() + n.size() && index < names.size()) {
+        rig.follow_body = int(index);
         return;
     }
     std::string known;
