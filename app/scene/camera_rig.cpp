@@ -4,6 +4,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -121,10 +122,15 @@ void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names
         rig.follow_body = int(index);
         return;
     }
+    // Short whatever the scene: the first few names, a long one as an excerpt (describe_json).
+    constexpr std::size_t kListed = 8, kLongName = 60;
     std::string known;
-    for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
+    for (std::size_t i = 0; i < std::min(names.size(), kListed); ++i)
+        known +=
+            (i ? ", " : "") + (names[i].size() <= kLongName ? names[i] : describe_json(names[i]));
+    if (names.size() > kListed) known += ", ... (" + std::to_string(names.size()) + " bodies)";
     throw SceneError(file, rig.follow_path,
-                     "no body named \"" + n + "\" to follow (bodies: " + known + ")");
+                     "no body named " + describe_json(n) + " to follow (bodies: " + known + ")");
 }
 
 } // namespace tumble::app
