@@ -48,10 +48,14 @@ inline const std::filesystem::path& scratch_dir() {
     return *dir;
 }
 
-// Writes the input bytes to `name` in the scratch folder and returns its path.
+// Writes the input bytes to `name` in the scratch folder and returns its path. A new file each
+// time: ext4 flushes a file truncated and rewritten when it is closed (auto_da_alloc), which
+// made every run take milliseconds.
 inline std::filesystem::path write_scratch(const char* name, const std::uint8_t* data,
                                            std::size_t size) {
     const std::filesystem::path path = scratch_dir() / name;
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     out.close();
