@@ -85,22 +85,23 @@ fuzz_one() {
     "$([ "$found" -gt 0 ] && echo " (tests/fuzz/crashers/$h/, log $log)")"
 }
 
-# Adds the scratch corpus's new-feature inputs to tests/fuzz/corpus/$1, if they stay small.
+# Adds the scratch corpus's new-feature inputs to tests/fuzz/corpus/$1, if they stay small. The
+# merge runs on a copy, so the committed corpus gets all of them or none.
 merge_one() {
-  local h=$1 committed=tests/fuzz/corpus/$1 scratch=$build/corpus/$1
+  local h=$1 committed=tests/fuzz/corpus/$1 scratch=$build/corpus/$1 merged=$build/merge/$1
   [ -d "$scratch" ] || { echo "$h: no scratch corpus ($scratch): fuzz first" >&2; return; }
-  local before
-  before=$(ls "$committed" | sort)
+  rm -rf "$merged"
+  mkdir -p "$merged"
+  cp "$committed"/* "$merged"/
   "$build/tests/fuzz/fuzz_$h" -merge=1 -max_len="$(max_len "$h")" -rss_limit_mb=2048 \
-    -timeout=10 "$committed" "$scratch" >"$build/logs/$h.merge.log" 2>&1
-  local added
-  added=$(comm -13 <(echo "$before") <(ls "$committed" | sort))
-  local count=0 bytes=0
-  for f in $added; do count=$((count + 1)); bytes=$((bytes + $(stat -c %s "$committed/$f"))); done
+    -timeout=10 "$merged" "$scratch" >"$build/logs/$h.merge.log" 2>&1
+  local added count=0 bytes=0
+  added=$(comm -13 <(ls "$committed" | sort) <(ls "$merged" | sort))
+  for f in $added; do count=$((count + 1)); bytes=$((bytes + $(stat -c %s "$merged/$f"))); done
   if [ "$count" -gt 100 ] || [ "$bytes" -gt 204800 ]; then
-    for f in $added; do rm "$committed/$f"; done
     echo "$h: merge would add $count files, $bytes bytes: too many, added nothing"
   else
+    for f in $added; do cp "$merged/$f" "$committed/"; done
     echo "$h: added $count files, $bytes bytes to $committed"
   fi
 }
