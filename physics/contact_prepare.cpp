@@ -10,11 +10,6 @@
 #include <algorithm>
 
 namespace tumble::physics {
-namespace {
-
-constexpr int kColours = ContactStage::kColours;
-
-} // namespace
 
 void ContactStage::prepare(const Model& m, const State& s, ThreadPool& pool) {
     Stopwatch clock;

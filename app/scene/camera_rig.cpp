@@ -4,6 +4,8 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 
 namespace tumble::app {
@@ -111,16 +113,24 @@ void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names
             rig.follow_body = int(i);
             return;
         }
+    // A body index: digits only (from_chars takes no sign, space or "+" for an unsigned), and
+    // too many of them is out of range, not an exception (std::stoul threw std::out_of_range).
     const std::string& n = rig.follow_name;
-    if (!n.empty() && n.find_first_not_of("0123456789") == std::string::npos &&
-        std::stoul(n) < names.size()) {
-        rig.follow_body = int(std::stoul(n));
+    std::size_t index = 0;
+    const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), index);
+    if (!n.empty() && ec == std::errc() && end == n.data() + n.size() && index < names.size()) {
+        rig.follow_body = int(index);
         return;
     }
+    // Short whatever the scene: the first few names, a long one as an excerpt (describe_json).
+    constexpr std::size_t kListed = 8, kLongName = 60;
     std::string known;
-    for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
+    for (std::size_t i = 0; i < std::min(names.size(), kListed); ++i)
+        known +=
+            (i ? ", " : "") + (names[i].size() <= kLongName ? names[i] : describe_json(names[i]));
+    if (names.size() > kListed) known += ", ... (" + std::to_string(names.size()) + " bodies)";
     throw SceneError(file, rig.follow_path,
-                     "no body named \"" + n + "\" to follow (bodies: " + known + ")");
+                     "no body named " + describe_json(n) + " to follow (bodies: " + known + ")");
 }
 
 } // namespace tumble::app

@@ -187,15 +187,27 @@ std::array<double, 3> JsonReader::vec3(const char* what) const {
 
 namespace {
 
+// nlohmann's syntax error from "syntax error" on. It quotes the token it was reading ("...; last
+// read: '<token>'[; expected ...]"), which may be the rest of the file: cut it to an excerpt.
+std::string syntax_error(std::string what) {
+    what.erase(0, std::min(what.find("syntax error"), what.size()));
+    const std::string tag = "; last read: '";
+    const std::size_t at = what.find(tag);
+    if (at == std::string::npos) return what;
+    const std::size_t begin = at + tag.size();
+    std::size_t end = what.rfind("'; expected "); // a short clause after the token, if any
+    if (end == std::string::npos || end < begin || what.size() - end > 100) end = what.size() - 1;
+    if (end <= begin + kExcerpt) return what;
+    return what.substr(0, begin) + utf8_prefix(what.substr(begin, end - begin), kExcerpt) + "..." +
+           what.substr(end);
+}
+
 nlohmann::json parse_text(const std::string& text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        std::string what = e.what();
-        const auto at = what.find("syntax error");
-        what = at == std::string::npos ? what : what.substr(at);
         throw SceneError(file, line_column(text, e.byte == 0 ? 0 : e.byte - 1),
-                         "invalid JSON: " + what);
+                         "invalid JSON: " + syntax_error(e.what()));
     } catch (const nlohmann::json::out_of_range& e) {
         // A number too large for a double ("number overflow parsing '1e999'"); the exception has
         // no position, so locate the quoted token in the text.
@@ -204,7 +216,8 @@ nlohmann::json parse_text(const std::string& text, const std::string& file) {
         const std::string token = open < close ? what.substr(open + 1, close - open - 1) : "";
         const std::size_t at = token.empty() ? std::string::npos : text.find(token);
         throw SceneError(file, at == std::string::npos ? "number" : line_column(text, at),
-                         "expected a finite number, got " + token +
+                         "expected a finite number, got " +
+                             (token.size() > kExcerpt ? token.substr(0, kExcerpt) + "..." : token) +
                              " (out of range for a double: non-finite)");
     }
 }
@@ -212,6 +225,11 @@ nlohmann::json parse_text(const std::string& text, const std::string& file) {
 } // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& file) {
+    // nlohmann's parser takes a NUL byte for the end of the text, so "{...}\0anything" would load,
+    // and the duplicate-key scan, which trusts the parser, would run off the end of an unclosed
+    // string after the NUL. JSON has no raw NUL byte (RFC 8259).
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+        throw SceneError(file, line_column(text, nul), "invalid JSON: a NUL byte (a binary file?)");
     check_json_nesting(text, file); // before any tree is built or walked
     nlohmann::json root = parse_text(text, file);
     check_duplicate_keys(text, file); // the parser kept the last of them silently

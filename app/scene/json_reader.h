@@ -62,9 +62,10 @@ std::string json_pointer_segment(const std::string& key);
 // by its size ("an array of 1000000 elements", "an object with 3 keys").
 std::string describe_json(const nlohmann::json& v);
 
-// Parses `text` (the contents of `file`). Syntax errors, and arrays and objects nested deeper than
-// kMaxJsonDepth (app/scene/json_nesting.h), become SceneError with line:column; a key twice in one
-// object (app/scene/json_duplicate_keys.h), SceneError at its JSON path naming both places.
+// Parses `text` (the contents of `file`). Syntax errors (a NUL byte among them), and arrays and
+// objects nested deeper than kMaxJsonDepth (app/scene/json_nesting.h), become SceneError with
+// line:column; a key twice in one object (app/scene/json_duplicate_keys.h), SceneError at its
+// JSON path naming both places.
 nlohmann::json parse_json(const std::string& text, const std::string& file);
 
 // Closest of `candidates` to `word` by edit distance, or empty if none is close.

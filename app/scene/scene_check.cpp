@@ -1,5 +1,6 @@
 #include "app/scene/scene_check.h"
 
+#include "app/scene/json_reader.h"
 #include "app/scene/scene_error.h"
 #include "physics/build.h"
 #include "physics/overlaps.h"
@@ -18,8 +19,10 @@ std::string json_field(const std::string& field) {
     return field;
 }
 
+// `body 3 "left wall"`; a long name cut to an excerpt (describe_json), so that no message quotes a
+// whole value.
 std::string body_label(const std::string& name, int i) {
-    return "body " + std::to_string(i) + " \"" + name + "\"";
+    return "body " + std::to_string(i) + " " + describe_json(name);
 }
 
 std::vector<std::string> body_names(const Scene& scene) {
