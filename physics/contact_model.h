@@ -27,7 +27,7 @@ struct ContactSettings {
     // Scene switches (docs/scene-format.md, "world").
     bool sleeping = true;               // bodies at rest for time_to_sleep stop being simulated
     int substeps = 0;                   // per step; 0: the fewest giving h / substeps <= 1/480 s
-    double restitution_threshold = 0.5; // m/s: slower impacts do not bounce (resting stays put)
+    double restitution_threshold = 0.5; // m/s: slower approaches do not bounce (resting stays put)
 
     // Solver constants (the soft step of Box2D v3, see contact_solver.h).
     // Stiffness of the soft contact, as a frequency: a quarter of the substep rate, the stiffest
