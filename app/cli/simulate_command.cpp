@@ -69,7 +69,7 @@ int run_simulate(const SimulateCommand& cmd) {
         remove_stale_temporaries_for(path, cmd.common.quiet);
     InterruptGuard guard; // from before the files exist: no signal can leave them half-written
     TrajectoryWriter out(cmd.output, diagnostics, scene);
-    const std::int64_t total = tl.total_steps();
+    const std::int64_t total = tl.end_step(); // the last row at t = duration
     Progress progress("simulating", total, cmd.common.quiet);
     out.write(sim.model, sim.state);
     bool interrupted = false;

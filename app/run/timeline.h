@@ -18,7 +18,12 @@ struct Timeline {
 
     bool adjusted() const { return h != scene_dt; }
     double frame_time(std::int64_t k) const { return static_cast<double>(k) / fps; }
+    // Steps to the last frame, t = (frames - 1) / fps: what a video draws.
     std::int64_t total_steps() const { return (frames - 1) * steps_per_frame; }
+    // Steps to t = frames / fps, the end of the video's last frame interval: where `simulate`
+    // ends, so a trajectory of `duration` seconds reaches t = duration (when duration * fps is
+    // whole; else the nearest frame time, as the video's own length).
+    std::int64_t end_step() const { return frames * steps_per_frame; }
     std::string describe() const; // one line for summaries and `tumble explain`
     // When adjusted(): "dt 0.001 s lowered to 0.000980392157 s so that 17 steps land on each
     // frame time (60 fps)"; else empty. Every command that steps a scene prints it.

@@ -32,9 +32,10 @@ TEST(Simulate, WritesStatesAndDiagnosticsAtTheRequestedSteps) {
               (std::vector<std::string>{"run/states.csv", "run/states.diagnostics.csv"}));
     const auto states = read_csv(dir / "run/states.csv");
     const auto diags = read_csv(dir / "run/states.diagnostics.csv");
-    // 0.5 s at 60 fps = 30 frames, 29 intervals of 4 steps = 116 steps; rows at 0, 6, .., 114, 116.
+    // 0.5 s at 60 fps and dt = 1/240 s is 120 steps, to t = 0.5 s; rows at 0, 6, .., 114, 120.
     ASSERT_EQ(diags.size(), 1u + 21u);
-    EXPECT_EQ(diags.back()[0], "116");
+    EXPECT_EQ(diags.back()[0], "120");
+    EXPECT_NEAR(std::stod(diags.back()[1]), 0.5, 1e-15);
     EXPECT_EQ(states.size(), 1u + 21u * 5u); // five bodies in the default scene
     EXPECT_EQ(states[0][0], "step");
     // Energy is conserved to rk4 accuracy until the first ball lands (the lowest starts 0.8 m
@@ -52,6 +53,23 @@ TEST(Simulate, WritesStatesAndDiagnosticsAtTheRequestedSteps) {
     TUMBLE_MEASURED(rise, 1e-9);
     EXPECT_LT(rise, 1e-9);
     EXPECT_LT(std::stod(diags.back()[4]), e0); // the balls have bounced
+}
+
+// The trajectory reaches t = duration, with or without --every, even where the scene's dt is
+// lowered to fit the frames (dt 0.001 at 60 fps: 17 steps of 1/1020 s per frame).
+TEST(Simulate, TheLastRowIsAtTheDuration) {
+    const auto dir = scratch_dir();
+    write_text(dir / "s.json", R"({"format_version": 1, "world": {"dt": 0.001, "duration": 2},
+        "bodies": [{"name": "b", "shape": {"type": "sphere", "radius": 0.1}}]})");
+    for (const char* every : {"1", "7"}) {
+        SCOPED_TRACE(every);
+        ASSERT_EQ(
+            run_tumble(dir, std::string("simulate s.json -q -o s.csv --every ") + every).exit_code,
+            0);
+        const auto rows = read_csv(dir / "s.csv");
+        EXPECT_EQ(rows.back()[0], std::to_string(2 * 60 * 17));
+        EXPECT_NEAR(std::stod(rows.back()[1]), 2.0, 1e-12);
+    }
 }
 
 TEST(Simulate, TwoRunsAreBitIdentical) {
