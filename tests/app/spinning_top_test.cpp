@@ -1,0 +1,64 @@
+// The built-in spinning_top does what docs/scene-format.md says: tilted 15 degrees, it rises
+// toward upright as its round tip slides (below 12.5 degrees within 2 s), then precesses between
+// 9 and 13 degrees, keeping most of its spin, and never tilts far enough to touch its rim.
+#include "app/cli_runner.h"
+#include "measured.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace tumble::test {
+namespace {
+
+struct TopRow {
+    double t, tilt_deg, spin;
+};
+
+// The top's rows (body 1) of a states CSV: tilt of its body z axis from the vertical, |w|.
+std::vector<TopRow> top_rows(const std::string& csv) {
+    std::vector<TopRow> rows;
+    std::istringstream in(csv);
+    std::string line;
+    std::getline(in, line); // header
+    while (std::getline(in, line)) {
+        std::vector<double> v;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');)
+            v.push_back(cell.starts_with("\"") ? 0.0 : std::stod(cell));
+        if (v.size() != 17 || v[2] != 1.0) continue;
+        const double qx = v[8], qy = v[9];
+        const double cos_tilt = 1.0 - 2.0 * (qx * qx + qy * qy); // R(q) e_z . e_z
+        const double spin = std::sqrt(v[14] * v[14] + v[15] * v[15] + v[16] * v[16]);
+        rows.push_back({v[1], std::acos(std::clamp(cos_tilt, -1.0, 1.0)) * 180.0 / M_PI, spin});
+    }
+    return rows;
+}
+
+TEST(SpinningTop, RisesThenPrecessesWithoutFalling) {
+    const auto dir = scratch_dir();
+    const CliResult r = run_tumble(dir, "simulate spinning_top -q --every 24 -o top.csv");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<TopRow> rows = top_rows(read_text(dir / "top.csv"));
+    ASSERT_EQ(rows.size(), 101u); // 0 .. 10 s every 0.1 s
+    EXPECT_NEAR(rows.front().tilt_deg, 15.0, 1e-9);
+    double tilt_at_2s = 0.0, low = 90.0, high = 0.0;
+    for (const TopRow& row : rows) {
+        if (std::abs(row.t - 2.0) < 1e-9) tilt_at_2s = row.tilt_deg;
+        if (row.t >= 1.0) low = std::min(low, row.tilt_deg), high = std::max(high, row.tilt_deg);
+    }
+    TUMBLE_MEASURED(tilt_at_2s, 12.5);
+    EXPECT_LT(tilt_at_2s, 12.5); // it rose
+    TUMBLE_MEASURED(low, 9.0);
+    TUMBLE_MEASURED(high, 13.0);
+    EXPECT_GT(low, 9.0);
+    EXPECT_LT(high, 13.0); // far from the rim
+    const double spin_at_end = rows.back().spin;
+    TUMBLE_MEASURED(spin_at_end, 65.0);
+    EXPECT_GT(spin_at_end, 65.0);
+    EXPECT_LT(spin_at_end, 75.0); // friction takes some
+}
+
+} // namespace
+} // namespace tumble::test
