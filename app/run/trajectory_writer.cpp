@@ -92,12 +92,24 @@ void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
 }
 
 std::vector<std::string> TrajectoryWriter::close_and_commit(bool interrupted) {
-    const bool states_ok = std::fclose(states_file_) == 0;
-    const bool diags_ok = !diags_file_ || std::fclose(diags_file_) == 0;
+    // fclose flushes what is buffered: a full disk shows here (errno ENOSPC, or EFBIG past a
+    // file-size limit), or already in the stream's error flag from an earlier write.
+    int error = 0;
+    auto close = [&error](std::FILE* f) {
+        if (!f) return true;
+        const bool ok = !std::ferror(f);
+        const bool closed = std::fclose(f) == 0;
+        if (!closed && error == 0) error = errno;
+        return ok && closed;
+    };
+    const bool states_ok = close(states_file_);
+    const bool diags_ok = close(diags_file_);
     states_file_ = diags_file_ = nullptr;
-    if (!states_ok || !diags_ok)
-        throw std::runtime_error("cannot write '" + states_.final_path().string() +
-                                 "': write failed (disk full?)");
+    if (!states_ok || !diags_ok) {
+        const io::AtomicFile& failed = states_ok ? *diags_ : states_;
+        throw std::runtime_error("cannot write '" + failed.final_path().string() +
+                                 "': " + (error ? std::strerror(error) : "write failed"));
+    }
     std::vector<std::string> written;
     for (io::AtomicFile* file : {&states_, diags_ ? &*diags_ : nullptr}) {
         if (!file) continue;
