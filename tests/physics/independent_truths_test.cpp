@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace tumble::physics {
@@ -97,6 +98,34 @@ TEST(IndependentTruths, UnequalFrictionsMixAsTheGeometricMean) {
     EXPECT_LT(err, 0.02);
     TUMBLE_MEASURED(std::abs(a20), 1e-3);
     EXPECT_LT(std::abs(a20), 1e-3);
+}
+
+// A box slid along flat ground at v0 with friction mu stops after t = v0 / (mu g), having gone
+// d = v0^2 / (2 mu g) (constant deceleration mu g), at h, 2h and 4h (h = 1/960 s). Measured
+// distance errors 0.17%, 0.34%, 0.34%: the solver substeps to at most 1/480 s, so 2h and 4h agree.
+TEST(IndependentTruths, ASlidingBoxStopsOverTheClosedFormDistance) {
+    const double g = 9.81, mu = 0.5, v0 = 3.0;
+    const double distance = v0 * v0 / (2.0 * mu * g), stop = v0 / (mu * g);
+    for (double dt : {1.0 / 960.0, 1.0 / 480.0, 1.0 / 240.0}) {
+        scenes::Scene s = scenes::incline(0.0, mu, dt, false); // a level "ramp"
+        s.bodies[1].velocity = Vec3(v0, 0, 0);
+        test::Sim run(s);
+        const double x0 = run.state.x[1].x();
+        double stopped_at = -1.0;
+        for (int k = 0; k < run.steps_for(2.0 * stop); ++k) {
+            run.steps(1);
+            if (stopped_at < 0.0 && run.state.v[1].x() <= 1e-9) stopped_at = (k + 1) * dt;
+        }
+        const double slid = run.state.x[1].x() - x0;
+        const double distance_error = std::abs(slid / distance - 1.0);
+        const double time_error = std::abs(stopped_at - stop);
+        std::printf("dt = 1/%.0f s: slid %.6f m (closed form %.6f), stopped at %.5f s (%.5f)\n",
+                    1.0 / dt, slid, distance, stopped_at, stop);
+        TUMBLE_MEASURED(distance_error, 0.01);
+        EXPECT_LT(distance_error, 0.01);
+        TUMBLE_MEASURED(time_error, 2 * dt);
+        EXPECT_LT(time_error, 2 * dt); // the stop is read to the step
+    }
 }
 
 } // namespace
