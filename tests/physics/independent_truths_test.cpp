@@ -128,5 +128,32 @@ TEST(IndependentTruths, ASlidingBoxStopsOverTheClosedFormDistance) {
     }
 }
 
+// A box on a ramp slides exactly when tan(angle) > mu: half a degree either side of
+// atan(0.5) = 26.565 degrees it holds, or slides at g (sin - mu cos), at h, 2h and 4h. Measured:
+// holds to 2e-10 m/s^2; slides within 0.78%, 1.55%, 1.55% of the closed form (a small difference
+// of two large terms, so a relative error a few times that of the 30-degree test).
+TEST(IndependentTruths, ABoxSlidesExactlyWhenTheSlopeExceedsTheFrictionAngle) {
+    const double g = 9.81, mu = 0.5, critical = std::atan(mu) * 180.0 / std::numbers::pi;
+    for (double dt : {1.0 / 960.0, 1.0 / 480.0, 1.0 / 240.0}) {
+        auto accel = [&](double degrees) {
+            const double angle = degrees * std::numbers::pi / 180.0;
+            test::Sim run(scenes::incline(angle, mu, dt, false));
+            run.steps(run.steps_for(1.0));
+            const Vec3 downhill = Quat(Eigen::AngleAxisd(angle, Vec3::UnitY())) * Vec3(1, 0, 0);
+            return run.state.v[1].dot(downhill) / run.state.time(run.model);
+        };
+        const double below = accel(critical - 0.5), above = accel(critical + 0.5);
+        const double a = (critical + 0.5) * std::numbers::pi / 180.0;
+        const double expected = g * (std::sin(a) - mu * std::cos(a)); // 0.0957 m/s^2
+        const double slide_error = std::abs(above / expected - 1.0);
+        std::printf("dt = 1/%.0f s: below %.3g m/s^2, above %.6f (closed form %.6f)\n", 1.0 / dt,
+                    below, above, expected);
+        TUMBLE_MEASURED(std::abs(below), 1e-6);
+        EXPECT_LT(std::abs(below), 1e-6);
+        TUMBLE_MEASURED(slide_error, 0.05);
+        EXPECT_LT(slide_error, 0.05);
+    }
+}
+
 } // namespace
 } // namespace tumble::physics
