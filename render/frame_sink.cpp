@@ -55,12 +55,8 @@ class NullSink final : public FrameSink {
 std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOptions& options) {
     if (output.empty()) throw SinkError(std::string("no output given; ") + kSupported);
     if (output == "null") return std::make_unique<NullSink>(options);
-    std::error_code ec;
-    if (output.back() == '/' || fs::is_directory(output, ec)) {
-        return std::make_unique<PngSequenceSink>(FramePattern::in_directory(output), options);
-    }
     const std::string ext = lowercase(fs::path(output).extension().string());
-    if (std::optional<FramePattern> pattern = FramePattern::parse(output)) {
+    if (std::optional<FramePattern> pattern = FramePattern::of_output(output)) {
         if (!lowercase(pattern->suffix).ends_with(".png")) {
             throw SinkError("cannot write '" + output + "': numbered outputs are PNG only (" +
                             "e.g. frames/%06d.png); " + kSupported);

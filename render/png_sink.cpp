@@ -72,6 +72,13 @@ FramePattern FramePattern::in_directory(const fs::path& dir) {
     return pattern;
 }
 
+std::optional<FramePattern> FramePattern::of_output(const std::string& output) {
+    std::error_code ec;
+    if (!output.empty() && (output.back() == '/' || fs::is_directory(output, ec)))
+        return in_directory(output);
+    return parse(output);
+}
+
 // ---- PngSequenceSink ---------------------------------------------------------------------------
 
 PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& options)

@@ -26,6 +26,10 @@ struct FramePattern {
     static std::optional<FramePattern> parse(const std::string& text);
     // dir/000000.png, dir/000001.png ... (six digits, the default for a directory output).
     static FramePattern in_directory(const std::filesystem::path& dir);
+    // The frame files an output names, as open_sink() reads it: a folder ("frames/", or an
+    // existing directory) gives in_directory(), a name with a conversion its pattern; a single
+    // file gives nothing. Throws SinkError for a malformed pattern (as parse()).
+    static std::optional<FramePattern> of_output(const std::string& output);
 };
 
 // Frame k goes to pattern.name(k), each file written atomically by write_png as it arrives.

@@ -14,11 +14,8 @@ namespace {
 
 // The frame files of a sequence output, or nothing for a single file.
 std::optional<render::FramePattern> frames_of(const std::string& output) {
-    std::error_code ec;
-    if (output.ends_with('/') || fs::is_directory(output, ec))
-        return render::FramePattern::in_directory(output);
     try {
-        return render::FramePattern::parse(output);
+        return render::FramePattern::of_output(output);
     } catch (const std::exception&) {
         return std::nullopt; // a bad pattern: the sink will refuse it with the full message
     }

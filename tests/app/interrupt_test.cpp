@@ -86,12 +86,9 @@ std::vector<std::string> lines_of(const fs::path& csv) {
 
 // Counts the data rows of a states CSV and returns the last row's step.
 long long last_step(const fs::path& csv, int& rows) {
-    std::ifstream in(csv);
-    std::string line, last;
-    rows = 0;
-    std::getline(in, line); // header
-    while (std::getline(in, line)) last = line, ++rows;
-    return last.empty() ? -1 : std::stoll(last.substr(0, last.find(',')));
+    const std::vector<std::string> lines = lines_of(csv);
+    rows = lines.empty() ? 0 : static_cast<int>(lines.size()) - 1; // less the header
+    return rows == 0 ? -1 : std::stoll(lines.back().substr(0, lines.back().find(',')));
 }
 
 TEST(Interrupts, AnInterruptedSimulateKeepsTheCompleteFileAndStoresThePartialRunApart) {

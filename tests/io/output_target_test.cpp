@@ -1,6 +1,7 @@
 // io/output_target.h and io/atomic_file.h: which outputs are replaced, streamed or refused, and
 // that a commit never renames over something that became a device or pipe meanwhile.
 #include "io/atomic_file.h"
+#include "io/io_scratch.h"
 #include "io/output_target.h"
 
 #include <gtest/gtest.h>
@@ -12,14 +13,6 @@ namespace tumble::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::path(TUMBLE_TEST_ARTIFACTS) / "io" / info->name();
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 TEST(OutputTarget, NewPathsAndRegularFilesAreReplaced) {
     const fs::path dir = fresh_dir();

@@ -1,6 +1,7 @@
 // io/temporary_files.h: the registry a second Ctrl-C empties, and the removal of temporaries of
 // processes that no longer run (and only those).
 #include "io/atomic_file.h"
+#include "io/io_scratch.h"
 #include "io/temporary_files.h"
 
 #include <gtest/gtest.h>
@@ -13,14 +14,6 @@ namespace tumble::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::path(TUMBLE_TEST_ARTIFACTS) / "io" / info->name();
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 // The pid of a process that has exited and been reaped: nothing runs under it (until the
 // system hands the number out again, which takes tens of thousands of new processes).
