@@ -5,6 +5,7 @@
 #include "app/cli/subcommand.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
+#include "app/study/contact_check.h"
 
 #include <cstdio>
 #include <memory>
@@ -94,6 +95,30 @@ void print_passes(const physics::Model& m) {
         "  check finite   on: a NaN or infinite state stops the run naming body and step\n");
 }
 
+// The contact stability map's cases this scene resembles, each run at the scene's settings
+// (app/study/contact_check.h); a case that fails is a warning.
+void print_contact_checks(const physics::Model& m, const physics::State& s) {
+    const std::vector<study::ContactCheck> checks = study::check_contact_regions(m, s);
+    if (checks.empty()) return;
+    std::printf("contact stability map (tumble study; docs/contacts.md), at this scene's step and "
+                "substeps:\n");
+    for (const study::ContactCheck& c : checks) {
+        if (c.run.held) {
+            std::printf("  %-16s holds: %s (%s)\n", c.c.label.c_str(), c.c.bound.c_str(),
+                        c.resemblance.c_str());
+            continue;
+        }
+        std::printf("  %-16s warning: fails%s: %s; the scene has %s. See the contact map of "
+                    "`tumble study` for the steps and substeps that hold\n",
+                    c.c.label.c_str(), c.run.diverged ? " (diverged)" : "", c.c.bound.c_str(),
+                    c.resemblance.c_str());
+        std::fprintf(stderr,
+                     "tumble: warning: %s: %s: outside the contact stability map's "
+                     "region at this step (%s)\n",
+                     c.c.label.c_str(), c.resemblance.c_str(), c.c.bound.c_str());
+    }
+}
+
 int run_explain(const SceneOptions& opts) {
     const Scene scene = load_for_command(opts);
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
@@ -106,6 +131,7 @@ int run_explain(const SceneOptions& opts) {
     std::printf("time: %s\n", tl.describe().c_str());
     print_bodies(scene, sim.model);
     print_passes(sim.model);
+    print_contact_checks(sim.model, sim.state);
     return kOk;
 }
 

@@ -1,5 +1,6 @@
 // `tumble study [--quick] [-o DIR] [--threads N]`: runs the work-precision grid and the stability
-// map, then writes DIR/study.csv, DIR/study.json, DIR/plots/*.png and DIR/report.md.
+// map of free bodies and of contacts, then writes DIR/study.csv, DIR/study.json,
+// DIR/contact_stability.csv, DIR/plots/*.png and DIR/report.md.
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/run/progress.h"
@@ -67,8 +68,9 @@ void print_summary(const Results& r, const std::string& dir) {
                     sci(rec.target, 0).c_str(), rec.row->integrator.c_str(), rec.row->dt,
                     sci(headline_error(*rec.row)).c_str(), 1e3 * rec.row->cost_s);
     }
-    std::printf("wrote %s/report.md, study.csv, study.json and plots/ in %.1f s\n", dir.c_str(),
-                r.seconds_total);
+    std::printf(
+        "wrote %s/report.md, study.csv, study.json, contact_stability.csv and plots/ in %.1f s\n",
+        dir.c_str(), r.seconds_total);
 }
 
 // The work-precision grid, with a progress bar over its runs.
@@ -97,6 +99,13 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     const Clock::time_point t1 = Clock::now();
     r.stability = stability_map(cmd.quick, r.threads);
     r.seconds_stability = seconds_since(t1);
+    if (!cmd.quiet)
+        std::fprintf(stderr, "tumble study: contact stability map (%zu cases, %s)\n",
+                     contact_cases().size(),
+                     cmd.quick ? "rk4 and symplectic_euler" : "every integrator");
+    const Clock::time_point t2 = Clock::now();
+    r.contact_stability = contact_stability_map(cmd.quick, r.threads);
+    r.seconds_contacts = seconds_since(t2);
     energy_traces(r, r.threads);
 
     r.orders = fit_orders(r.rows);
@@ -109,6 +118,7 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     r.seconds_total = seconds_since(start);
     write_csv(dir / "study.csv", r);
     write_json(dir / "study.json", r);
+    write_contact_csv(dir / "contact_stability.csv", r);
     write_report(dir / "report.md", r);
 }
 

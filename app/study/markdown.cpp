@@ -4,6 +4,7 @@
 #include "app/study/report.h"
 #include "physics/integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -35,7 +36,8 @@ void header(std::ostringstream& o, const Results& r) {
     o << "# Tumble work-precision study" << (r.quick ? " (quick)" : "") << "\n\n"
       << "Made by `tumble study" << (r.quick ? " --quick" : "") << " --threads " << r.threads
       << "` in " << fixed(r.seconds_total, 1) << " s (grid " << fixed(r.seconds_grid, 1)
-      << " s, stability map " << fixed(r.seconds_stability, 1) << " s).\n\n"
+      << " s, stability map " << fixed(r.seconds_stability, 1) << " s, contact map "
+      << fixed(r.seconds_contacts, 1) << " s).\n\n"
       << "- Machine: " << r.machine << "\n- Build: " << r.build << "\n- Plots: " << r.plotter
       << " (Debian `gnuplot-nox`, pngcairo), run on generated scripts kept beside the PNGs.\n"
       << "- Every row is in `study.csv` and `study.json`; docs/study.md explains the method.\n\n"
@@ -173,6 +175,43 @@ void stability_section(std::ostringstream& o, const Results& r) {
     o << "\n";
 }
 
+std::string contact_cell(const ContactStabilityResult& c) {
+    if (c.below_range) return "< " + g3(kMinContactDt);
+    if (c.above_range) return ">= " + g3(c.dt);
+    return g3(c.dt) + (c.holds_default ? "" : " **!**");
+}
+
+// One table: the cases down, the (integrator, substeps) settings across.
+void contact_section(std::ostringstream& o, const Results& r) {
+    if (r.contact_stability.empty()) return;
+    std::vector<std::pair<std::string, int>> cols;
+    for (const ContactStabilityResult& c : r.contact_stability) {
+        const std::pair<std::string, int> key{c.integrator, c.substeps};
+        if (std::find(cols.begin(), cols.end(), key) == cols.end()) cols.push_back(key);
+    }
+    o << "## Contact stability map\n\nLargest step h (s) at which each contact case holds, for "
+         "each integrator and contact substep count (\"auto\": the default, the fewest substeps "
+         "with h / n <= 1/480 s). From h = 1/240 s the step doubles while the case holds (up to "
+      << g3(kMaxContactDt) << " s) or halves until it does (down to " << g3(kMinContactDt)
+      << " s), then bisection (ratio " << (r.quick ? "1.25" : "1.05")
+      << "). **!** marks a setting that fails at the default step 1/240 s; a case is inside "
+         "its region at a given step when that step is at most the number shown.\n\n![contacts]("
+      << contact_stability_plot() << ")\n\n| case | holds when |";
+    for (const auto& [name, n] : cols)
+        o << ' ' << name << ", " << (n == 0 ? std::string("auto") : std::to_string(n)) << " |";
+    o << "\n|---|---|";
+    for (std::size_t i = 0; i < cols.size(); ++i) o << "---|";
+    o << '\n';
+    for (std::size_t i = 0; i < r.contact_stability.size(); i += cols.size()) {
+        const ContactCase& c = r.contact_stability[i].c;
+        o << "| " << c.label << " | " << c.bound << " |";
+        for (std::size_t j = 0; j < cols.size(); ++j)
+            o << ' ' << contact_cell(r.contact_stability[i + j]) << " |";
+        o << '\n';
+    }
+    o << "\n";
+}
+
 void recommendation_section(std::ostringstream& o, const Results& r) {
     o << "## Recommendation\n\nFor each target orientation error (position error, m, for the "
          "contact problems; the maximum over [0, T], T "
@@ -213,6 +252,7 @@ void write_report(const std::filesystem::path& file, const Results& r) {
     divergences(o, r);
     energy_section(o, r);
     stability_section(o, r);
+    contact_section(o, r);
     recommendation_section(o, r);
     write_text_atomic(file, o.str());
 }

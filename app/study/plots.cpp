@@ -179,6 +179,38 @@ void stability_plots(const fs::path& dir, const Results& r) {
     draw(dir, "stability", o.str());
 }
 
+// The contact map for the default integrator: the largest step of each case, one series per
+// substep setting, against the default step (a dashed line).
+void contact_plots(const fs::path& dir, const Results& r) {
+    const std::vector<ContactCase> cases = contact_cases();
+    std::vector<int> subs;
+    for (const ContactStabilityResult& c : r.contact_stability)
+        if (std::find(subs.begin(), subs.end(), c.substeps) == subs.end())
+            subs.push_back(c.substeps);
+    std::vector<std::string> titles;
+    for (int n : subs)
+        titles.push_back(n == 0 ? std::string("rk4, default substeps")
+                                : "rk4, " + std::to_string(n) + " substeps");
+    std::ostringstream o;
+    o << "set logscale y\nset format y \"10^{%L}\"\nset grid\nset key outside right top\n"
+      << "set title \"contacts: largest step at which each case holds (dashed: h = 1/240 s)\"\n"
+      << "set ylabel \"h, s\"\nset xrange [-0.5:" << cases.size() - 0.5
+      << "]\nset xtics rotate by 35 right (";
+    for (std::size_t i = 0; i < cases.size(); ++i)
+        o << (i ? ", " : "") << '"' << cases[i].label << "\" " << i;
+    o << ")\nset arrow from -0.5," << 1.0 / 240.0 << " to " << cases.size() - 0.5 << ','
+      << 1.0 / 240.0 << " nohead dt 2 lc rgb \"gray40\"\n";
+    o << series(o, titles, [&](std::size_t k) {
+        std::vector<std::pair<double, double>> xy;
+        for (std::size_t i = 0; i < cases.size(); ++i)
+            for (const ContactStabilityResult& c : r.contact_stability)
+                if (c.integrator == "rk4" && c.substeps == subs[k] && c.c.label == cases[i].label)
+                    xy.emplace_back(double(i), c.dt);
+        return xy;
+    });
+    draw(dir, "contact-stability", o.str());
+}
+
 } // namespace
 
 std::string gnuplot_version() {
@@ -214,6 +246,7 @@ void write_plots(const fs::path& dir, const Results& r) {
         }
     energy_plots(dir, r);
     stability_plots(dir, r);
+    if (!r.contact_stability.empty()) contact_plots(dir, r);
 }
 
 } // namespace tumble::app::study

@@ -28,6 +28,9 @@ inline const char* energy_plot() {
 inline const char* stability_plot() {
     return "plots/stability.png";
 }
+inline const char* contact_stability_plot() {
+    return "plots/contact-stability.png";
+}
 
 // Draws every plot into dir/plots/. Throws PlotError when gnuplot fails (its message included).
 void write_plots(const std::filesystem::path& dir, const Results& r);

@@ -102,8 +102,10 @@ void write_json(const std::filesystem::path& file, const Results& r) {
     j["samples"] = kSamples;
     j["timing"] = {{"repetitions", r.timing.repetitions},
                    {"min_rep_seconds", r.timing.min_rep_seconds}};
-    j["seconds"] = {
-        {"grid", r.seconds_grid}, {"stability", r.seconds_stability}, {"total", r.seconds_total}};
+    j["seconds"] = {{"grid", r.seconds_grid},
+                    {"stability", r.seconds_stability},
+                    {"contacts", r.seconds_contacts},
+                    {"total", r.seconds_total}};
     for (const Row& row : r.rows)
         j["rows"].push_back({{"problem", row.problem},
                              {"integrator", row.integrator},
@@ -152,7 +154,29 @@ void write_json(const std::filesystem::path& file, const Results& r) {
              {"below_range", s.below_range},
              {"above_range", s.above_range},
              {"evaluations", s.evaluations}});
+    for (const ContactStabilityResult& c : r.contact_stability)
+        j["contact_stability"].push_back({{"case", c.c.label},
+                                          {"family", c.c.family},
+                                          {"parameter", c.c.parameter},
+                                          {"integrator", c.integrator},
+                                          {"substeps", c.substeps},
+                                          {"dt", c.dt},
+                                          {"holds_default", c.holds_default},
+                                          {"below_range", c.below_range},
+                                          {"above_range", c.above_range},
+                                          {"evaluations", c.evaluations}});
     write_text_atomic(file, j.dump(1) + "\n");
+}
+
+void write_contact_csv(const std::filesystem::path& file, const Results& r) {
+    std::ostringstream o;
+    o << "case,family,parameter,integrator,substeps,dt,holds_default,below_range,above_range,"
+         "evaluations\n";
+    for (const ContactStabilityResult& c : r.contact_stability)
+        o << c.c.label << ',' << c.c.family << ',' << num(c.c.parameter) << ',' << c.integrator
+          << ',' << c.substeps << ',' << num(c.dt) << ',' << c.holds_default << ',' << c.below_range
+          << ',' << c.above_range << ',' << c.evaluations << '\n';
+    write_text_atomic(file, o.str());
 }
 
 } // namespace tumble::app::study

@@ -2,6 +2,7 @@
 // The study's outputs: study.csv and study.json (every row), report.md (the Markdown report, ending
 // with the recommendation table) and, through study_plots.h, the PNG plots it links to.
 #include "app/study/analysis.h"
+#include "app/study/contact_stability.h"
 #include "app/study/runner.h"
 #include "app/study/stability.h"
 #include "app/study/study.h"
@@ -20,10 +21,12 @@ struct Results {
     std::vector<OrderFit> orders;
     std::vector<Recommendation> recommendations;
     std::vector<StabilityResult> stability;
+    std::vector<ContactStabilityResult> contact_stability;
     std::string energy_problem; // the problem and step of the energy-against-time plot
     double energy_dt = 0.0, energy_t_end = 0.0;
     std::vector<EnergyTrace> energy;
-    double seconds_grid = 0.0, seconds_stability = 0.0, seconds_total = 0.0;
+    double seconds_grid = 0.0, seconds_stability = 0.0, seconds_contacts = 0.0;
+    double seconds_total = 0.0;
     std::string machine; // CPU model and core count (/proc/cpuinfo)
     std::string build;   // compiler, build type, flags
     std::string plotter; // gnuplot's version line
@@ -37,6 +40,8 @@ std::string describe_build();
 void write_csv(const std::filesystem::path& file, const Results& r);
 void write_json(const std::filesystem::path& file, const Results& r);
 void write_report(const std::filesystem::path& file, const Results& r);
+// contact_stability.csv: one row per (case, integrator, substeps) of the contact map.
+void write_contact_csv(const std::filesystem::path& file, const Results& r);
 
 // Writes `text` to `file` under a temporary name, then renames it into place.
 void write_text_atomic(const std::filesystem::path& file, const std::string& text);

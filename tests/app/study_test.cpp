@@ -102,6 +102,21 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
             EXPECT_GE(count, 4) << p << " / " << info.name;
         }
 
+    // The contact map: every case for every (integrator, substeps) of the quick map, in the CSV,
+    // the JSON, the report and its plot; the default settings hold the 50 m/s bullet.
+    const std::vector<CsvRow> contact = read_csv(out / "contact_stability.csv");
+    EXPECT_EQ(contact.size(), 13u * 2u * 2u);
+    EXPECT_EQ(j["contact_stability"].size(), contact.size());
+    for (const CsvRow& row : contact) {
+        EXPECT_GT(row.num("dt"), 0.0) << row.f.at("case");
+        if (row.f.at("case") == "bullet 50 m/s" && row.f.at("integrator") == "rk4" &&
+            row.f.at("substeps") == "0") {
+            EXPECT_EQ(row.f.at("holds_default"), "1");
+        }
+    }
+    EXPECT_NE(read_text(out / "report.md").find("## Contact stability map"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "plots" / "contact-stability.png"));
+
     // Divergences are rows with body, step and quantity; other rows have finite errors.
     int diverged = 0;
     for (const CsvRow& row : rows) {
