@@ -22,6 +22,8 @@
 #include "physics/scenes/scene.h"
 #include "scene_sim.h"
 
+#include "physics/scenes/stability_scenes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,31 +42,8 @@ constexpr int kSides = 48;
 constexpr double kProfile[][2] = {{0.0, 0.0}, {0.040, 0.030}, {0.040, 0.036}, {0.008, 0.056}};
 constexpr int kRings = 3; // the profile's points after the tip
 
-// The top as a closed mesh: the tip vertex, rings of kSides vertices at the profile's radii, a
-// centre vertex capping the crown; counter-clockwise seen from outside.
-std::shared_ptr<TriangleMesh> top_mesh() {
-    auto mesh = std::make_shared<TriangleMesh>();
-    mesh->vertices.emplace_back(0.0, 0.0, 0.0); // the tip, vertex 0
-    for (int ring = 1; ring <= kRings; ++ring)
-        for (int k = 0; k < kSides; ++k) {
-            const double a = 2.0 * kPi * k / kSides, r = kProfile[ring][0];
-            mesh->vertices.emplace_back(r * std::cos(a), r * std::sin(a), kProfile[ring][1]);
-        }
-    mesh->vertices.emplace_back(0.0, 0.0, kProfile[kRings][1]);
-    const int cap = static_cast<int>(mesh->vertices.size()) - 1, last = 1 + (kRings - 1) * kSides;
-    for (int k = 0; k < kSides; ++k) {
-        const int k1 = (k + 1) % kSides;
-        mesh->triangles.push_back({0, 1 + k1, 1 + k});
-        for (int ring = 0; ring + 1 < kRings; ++ring) {
-            const int lo = 1 + ring * kSides, hi = lo + kSides;
-            mesh->triangles.push_back({lo + k, lo + k1, hi + k1});
-            mesh->triangles.push_back({lo + k, hi + k1, hi + k});
-        }
-        mesh->triangles.push_back({cap, last + k, last + k1});
-    }
-    return mesh;
-}
-
+// The mesh is scenes::sharp_top_mesh(kSides), the contact map's top, whose profile kProfile
+// repeats; its mass properties below are computed here by slices, not by mesh_mass.cpp.
 struct TopMass {
     double m, d, i1_tip, i1, i3; // kg, m (tip to centre), kg m^2
 };
@@ -118,7 +97,7 @@ TEST(TopPrecession, TheMeshTopsMassPropertiesMatchTheSlices) {
     const TopMass top = top_mass(kDensity);
     BodyDef b;
     b.shape = Shape::mesh();
-    b.mesh = top_mesh();
+    b.mesh = scenes::sharp_top_mesh(kSides);
     b.mass = top.m;
     ASSERT_FALSE(check_closed_mesh(*b.mesh).has_value());
     WorldDef world;
@@ -150,7 +129,7 @@ Precession spin_top(const TopMass& top, double dt, double seconds) {
     s.world.contact.sleeping = false;
     BodyDef b;
     b.shape = Shape::mesh();
-    b.mesh = top_mesh();
+    b.mesh = scenes::sharp_top_mesh(kSides);
     b.mass = top.m;
     b.material.friction = 1.0;
     b.orientation = Quat(Eigen::AngleAxisd(kTilt, Vec3::UnitX()));
