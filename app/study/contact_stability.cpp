@@ -1,4 +1,5 @@
 #include "app/study/contact_stability.h"
+#include "app/study/boundary_search.h"
 #include "app/study/runner.h"
 #include "physics/build.h"
 #include "physics/diagnostics.h"
@@ -59,12 +60,13 @@ struct Measure {
     const scenes::Scene& scene;
     const Model& model;
     const State& start;
+    double start_energy; // diagnose(model, start).energy(), for "rest"
 
     double operator()(const State& s) const {
         if (c.family == "stack" || c.family == "ratio") return stack_drift(s);
         if (c.family == "bullet") return s.x[1].x(); // the ball's centre; the plate is at x = 0
         if (c.family == "top") return top_depth(s);
-        return physics::diagnose(model, s).energy() - physics::diagnose(model, start).energy();
+        return physics::diagnose(model, s).energy() - start_energy;
     }
     // Sideways drift over kStackDrift, or sinking over kStackSink, as a multiple of its limit.
     double stack_drift(const State& s) const {
@@ -122,7 +124,7 @@ ContactRun run_contact_case(const ContactCase& c, const std::string& integrator,
     const Model model = physics::build_model(scene.world, scene.bodies);
     State state = physics::initial_state(model, scene.bodies);
     const State start = state;
-    const Measure measure{c, scene, model, start};
+    const Measure measure{c, scene, model, start, physics::diagnose(model, start).energy()};
     const double limit = limit_of(c, model);
     ContactRun run;
     run.worst = -std::numeric_limits<double>::infinity();
@@ -147,34 +149,15 @@ namespace {
 ContactStabilityResult search(const ContactCase& c, const std::string& integrator, int substeps,
                               double ratio) {
     ContactStabilityResult r{c, integrator, substeps};
-    const auto holds = [&](double dt) {
-        ++r.evaluations;
-        return run_contact_case(c, integrator, dt, substeps).held;
-    };
-    double lo = 0.0, hi = 0.0; // lo holds, hi fails
-    r.holds_default = holds(kDefaultDt);
-    if (r.holds_default) {
-        lo = kDefaultDt;
-        for (hi = 2.0 * lo; hi <= kMaxContactDt * 1.0000001 && holds(hi); hi *= 2.0) lo = hi;
-        if (hi > kMaxContactDt * 1.0000001) {
-            r.dt = lo;
-            r.above_range = true;
-            return r;
-        }
-    } else {
-        hi = kDefaultDt;
-        for (lo = 0.5 * hi; lo >= kMinContactDt * 0.9999999 && !holds(lo); lo *= 0.5) hi = lo;
-        if (lo < kMinContactDt * 0.9999999) {
-            r.dt = kMinContactDt;
-            r.below_range = true;
-            return r;
-        }
-    }
-    while (hi / lo > ratio) {
-        const double mid = std::sqrt(lo * hi);
-        (holds(mid) ? lo : hi) = mid;
-    }
-    r.dt = lo;
+    const Boundary b =
+        largest_passing(kDefaultDt, kMinContactDt, kMaxContactDt, ratio, [&](double dt) {
+            ++r.evaluations;
+            return run_contact_case(c, integrator, dt, substeps).held;
+        });
+    r.dt = b.value;
+    r.holds_default = b.holds_start;
+    r.below_range = b.below_range;
+    r.above_range = b.above_range;
     return r;
 }
 

@@ -1,4 +1,5 @@
 #include "app/study/stability.h"
+#include "app/study/boundary_search.h"
 #include "app/study/runner.h"
 #include "physics/build.h"
 #include "physics/integrator.h"
@@ -51,29 +52,13 @@ namespace {
 
 StabilityResult search(const InertiaCase& c, const std::string& integrator, double ratio) {
     StabilityResult r{c, integrator, kMinHw, false, false, 0};
-    const auto stable = [&](double h_w) {
+    const Boundary b = largest_passing(kMinHw, kMinHw, kMaxHw, ratio, [&](double h_w) {
         ++r.evaluations;
         return keeps_energy(integrator, c.moments, h_w);
-    };
-    if (!stable(kMinHw)) {
-        r.below_range = true;
-        return r;
-    }
-    double lo = kMinHw, hi = 2.0 * kMinHw;
-    while (stable(hi)) {
-        lo = hi;
-        if (lo >= kMaxHw) {
-            r.h_w = kMaxHw;
-            r.above_range = true;
-            return r;
-        }
-        hi = std::min(2.0 * hi, kMaxHw);
-    }
-    while (hi / lo > ratio) {
-        const double mid = std::sqrt(lo * hi);
-        (stable(mid) ? lo : hi) = mid;
-    }
-    r.h_w = lo;
+    });
+    r.h_w = b.value;
+    r.below_range = b.below_range;
+    r.above_range = b.above_range;
     return r;
 }
 
