@@ -6,6 +6,10 @@
 //   rain/<N>/shifted/threads:2   the same on two threads; its final state must have the bits of
 //                                the single-threaded run (hash compared, reported as identical)
 //   rain/<N>/columns/threads:1   the unshifted scene: the spheres stack in columns
+//   rain/<N>/shifted_480x1/threads:1  the baseline in the same run: the solver settings before
+//                                issue 13 (480 substeps per second, one solve and one relax
+//                                sweep each), which let
+//                                stacks rock; the summary gives the defaults' cost against it
 //   free_flight/assembled        issue 4's "a scene with no contacts runs none of it": the two
 //   free_flight/contacts_forced  bodies of scenes::gravity_spin_scene (cannot touch, so no contact
 //                                stage) against the same scene with the stage forced on
@@ -15,9 +19,10 @@
 // threads by the wall clock; the 2-core speed-up compares the wall-clock times of both. Counters
 // per run: steps_per_s, us_per_body_step, us_per_contact (time over the sum of contact points over
 // the steps), us_per_contact_iteration (per point and solver sweep: two sweeps, solve and relax,
-// per substep), and at the end: contacts (points), manifolds, max_penetration_mm, kinetic_energy_J,
-// outside (spheres outside the box or below the floor). The summary gives the medians, the 2-core
-// speed-up and the targets of the issue, each ratio from this run.
+// per substep: `iterations` solve and `relax_iterations` relax sweeps), and at the end: contacts
+// (points), manifolds, max_penetration_mm, kinetic_energy_J, outside (spheres outside the box or
+// below the floor). The summary gives the medians, the 2-core speed-up and the targets of the
+// issue, each ratio from this run.
 #include "physics/scenes/reference_scenes.h"
 #include "physics/scenes/sphere_rain.h"
 #include "physics/scenes/state_hash.h"
@@ -46,7 +51,7 @@ constexpr int kRainSteps = 1200; // 5 s at 1/240 s
 // Final-state hashes of the single-threaded runs, by N: the 2-thread runs must match them.
 std::map<int, std::uint64_t> g_single_hash;
 
-void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
+void bench_rain(benchmark::State& bench, int n, bool shifted, int threads, bool legacy) {
     const int count = n * n * n;
     StepWorkspace ws(threads);
     double body_steps = 0, point_steps = 0, sweeps = 0;
@@ -56,7 +61,12 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
     std::uint64_t hash = 0;
     for (auto _ : bench) {
         bench.PauseTiming();
-        const scenes::Scene scene = scenes::sphere_rain(n, shifted);
+        scenes::Scene scene = scenes::sphere_rain(n, shifted);
+        if (legacy) {
+            scene.world.contact.substeps = 2;
+            scene.world.contact.iterations = 1;
+            scene.world.contact.relax_iterations = 1;
+        }
         const Model model = build_model(scene.world, scene.bodies);
         State state = initial_state(model, scene.bodies);
         bench.ResumeTiming();
@@ -68,7 +78,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
             stage[3] += pr.impacts, stage[4] += pr.solve, stage[5] += pr.integrate;
             stage[6] += pr.finish;
             point_steps += st.points;
-            sweeps += 2.0 * st.substeps * st.points;
+            sweeps += static_cast<double>(st.sweeps) * st.substeps * st.points;
         }
         bench.PauseTiming();
         body_steps += static_cast<double>(kRainSteps) * count;
@@ -77,7 +87,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads) {
         hash = state_hash(state);
         bench.ResumeTiming();
     }
-    if (threads == 1 && shifted) g_single_hash[count] = hash;
+    if (threads == 1 && shifted && !legacy) g_single_hash[count] = hash;
     const auto inverted = benchmark::Counter::kIsRate | benchmark::Counter::kInvert;
     bench.counters["steps_per_s"] = benchmark::Counter(
         static_cast<double>(kRainSteps) * bench.iterations(), benchmark::Counter::kIsRate);
@@ -148,11 +158,13 @@ int main(int argc, char** argv) {
     for (const int n : {10, 20}) {
         const int reps = n == 10 ? reps_small : reps_large;
         const std::string base = "rain/" + std::to_string(n * n * n);
-        for (const auto& [name, shifted, threads] :
-             {std::tuple{"/shifted/threads:1", true, 1}, std::tuple{"/shifted/threads:2", true, 2},
-              std::tuple{"/columns/threads:1", false, 1}}) {
+        for (const auto& [name, shifted, threads, legacy] :
+             {std::tuple{"/shifted/threads:1", true, 1, false},
+              std::tuple{"/shifted/threads:2", true, 2, false},
+              std::tuple{"/columns/threads:1", false, 1, false},
+              std::tuple{"/shifted_480x1/threads:1", true, 1, true}}) {
             benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(
-                (base + name).c_str(), bench_rain, n, shifted, threads);
+                (base + name).c_str(), bench_rain, n, shifted, threads, legacy);
             b->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(reps);
             if (threads > 1) b->UseRealTime();
         }

@@ -21,24 +21,29 @@ class RainSummary : public MedianReporter {
         std::string csv = "case,N,steps_per_s,us_per_body_step,us_per_contact,"
                           "us_per_contact_iteration,contacts_end,manifolds_end,"
                           "max_penetration_mm,kinetic_energy_J,outside,speedup_2_threads,"
-                          "bit_identical_to_1_thread\n";
+                          "bit_identical_to_1_thread,time_vs_480x1\n";
         for (const int n : {1000, 8000}) {
             const std::string base = "rain/" + std::to_string(n);
             const double single = value(base + "/shifted/threads:1", "wall_ms");
-            for (const char* c :
-                 {"/shifted/threads:1", "/shifted/threads:2", "/columns/threads:1"}) {
+            const std::string legacy = base + "/shifted_480x1/threads:1";
+            for (const char* c : {"/shifted/threads:1", "/shifted/threads:2", "/columns/threads:1",
+                                  "/shifted_480x1/threads:1"}) {
                 const std::string name = base + c;
                 if (!has(name)) continue;
                 const bool two = std::string(c) == "/shifted/threads:2";
                 char line[512];
-                std::snprintf(
-                    line, sizeof line, "%s,%d,%.1f,%.3f,%.4f,%.5f,%.0f,%.0f,%.3f,%.4g,%.0f,%s,%s\n",
-                    name.c_str(), n, value(name, "steps_per_s"), value(name, "us_per_body_step"),
-                    value(name, "us_per_contact"), value(name, "us_per_contact_iteration"),
-                    value(name, "contacts"), value(name, "manifolds"),
-                    value(name, "max_penetration_mm"), value(name, "kinetic_energy_J"),
-                    value(name, "outside"), two ? fmt(single / value(name, "wall_ms")).c_str() : "",
-                    two ? (value(name, "identical") == 1.0 ? "yes" : "NO") : "");
+                std::snprintf(line, sizeof line,
+                              "%s,%d,%.1f,%.3f,%.4f,%.5f,%.0f,%.0f,%.3f,%.4g,%.0f,%s,%s,%s\n",
+                              name.c_str(), n, value(name, "steps_per_s"),
+                              value(name, "us_per_body_step"), value(name, "us_per_contact"),
+                              value(name, "us_per_contact_iteration"), value(name, "contacts"),
+                              value(name, "manifolds"), value(name, "max_penetration_mm"),
+                              value(name, "kinetic_energy_J"), value(name, "outside"),
+                              two ? fmt(single / value(name, "wall_ms")).c_str() : "",
+                              two ? (value(name, "identical") == 1.0 ? "yes" : "NO") : "",
+                              std::string(c) == "/shifted/threads:1" && has(legacy)
+                                  ? fmt(value(name, "wall_ms") / value(legacy, "wall_ms")).c_str()
+                                  : "");
                 csv += line;
             }
         }

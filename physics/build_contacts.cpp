@@ -20,6 +20,10 @@ const TriangleMesh& checked_mesh(const BodyDef& b, int i) {
 void validate_contact_settings(const ContactSettings& s) {
     require(s.substeps >= 0 && s.substeps <= 64, -1, "substeps",
             "substeps must be 0 (automatic) or 1..64");
+    require(s.iterations >= 1 && s.iterations <= 64, -1, "iterations",
+            "iterations must be 1..64 solve sweeps per substep");
+    require(s.relax_iterations >= 1 && s.relax_iterations <= 64, -1, "relax_iterations",
+            "relax_iterations must be 1..64 sweeps per substep");
     require(std::isfinite(s.restitution_threshold) && s.restitution_threshold >= 0.0, -1,
             "restitution_threshold", "the restitution threshold must be a speed >= 0 in m/s");
 }

@@ -25,15 +25,17 @@ inline double mix_restitution(const Material& a, const Material& b) {
 
 struct ContactSettings {
     // Scene switches (docs/scene-format.md, "world").
-    bool sleeping = true;               // bodies at rest for time_to_sleep stop being simulated
-    int substeps = 0;                   // per step; 0: the fewest giving h / substeps <= 1/480 s
+    bool sleeping = true; // bodies at rest for time_to_sleep stop being simulated
+    int substeps = 0;     // per step; 0: the fewest giving h / substeps <= 1 / kSubstepRate
+    int iterations = 3;   // soft solve sweeps per substep (1..64), then the relax sweeps
     double restitution_threshold = 0.5; // m/s: slower approaches do not bounce (resting stays put)
 
     // Solver constants (the soft step of Box2D v3, see contact_solver.h).
     // Stiffness of the soft contact, as a frequency: a quarter of the substep rate, the stiffest
-    // that stays stable with one sweep per substep (120 Hz at 480 substeps per second). A load F
-    // then sinks a contact by F / (m_eff (2 pi hertz)^2): 0.3 mm for a 5 cm sphere under ten
-    // times its weight.
+    // that stays stable (Box2D v3's cap; 360 Hz at 1440 substeps per second, twice that against a
+    // static body). A load F sinks a contact by F / (m_eff (2 pi hertz)^2), so the sag falls with
+    // the square of the substep: a 1000 kg cube on a 1 kg one (m_eff about 0.25 kg per corner)
+    // sank 21 mm at 480 substeps per second and 2.4 mm at 1440.
     double contact_hertz_fraction = 0.25; // of the substep rate
     // Damping ratio of the soft contact. Higher: the response is more nearly rigid and the spring
     // pushes overlap out more slowly (at bias_rate s, bias_rate = omega / (2 zeta + h omega),
@@ -43,6 +45,10 @@ struct ContactSettings {
     // cubes drifts under 2 mm in 10 s at 15 but up to 13 mm at 25; the 8000-sphere pile keeps
     // every overlap under 1 mm.
     double contact_damping_ratio = 15.0;
+    // Relax sweeps per substep (no push-out bias): they take back the push-out velocity. With one,
+    // two boxes made to overlap face on face flew apart with 2.4% of the push's kinetic energy
+    // (tests/physics/independent_truths_contact_test.cpp); with two, 3e-9 of it.
+    int relax_iterations = 2;
     double max_push_speed = 3.0;        // m/s: fastest speed at which overlap is pushed out
     double speculative_distance = 0.01; // m: contacts this far apart are kept (plus speed * h)
     double sleep_speed = 0.05;          // m/s: a body slower than this (at any point) may sleep
@@ -61,10 +67,16 @@ inline bool steps_on_one_thread(const ContactSettings& s, std::size_t dynamic_bo
     return static_cast<long long>(dynamic_bodies) < s.parallel_min_bodies;
 }
 
-// Substeps of one step h: settings.substeps, or the fewest with h / n <= 1/480 s.
+// The automatic substep rate, per second. With `iterations` 3 it is the least measured that holds
+// every region of the contact stability map at h = 1/240 s (docs/contacts.md, "Substeps and
+// iterations"): at 480 per second and one sweep a stack of 5 boxes rocked and walked 6.5 mm in
+// 10 s, and a 1000 kg cube sank 2 cm into the 1 kg cube it stood on.
+inline constexpr double kSubstepRate = 1440.0;
+
+// Substeps of one step h: settings.substeps, or the fewest with h / n <= 1 / kSubstepRate.
 inline int substep_count(const ContactSettings& s, double h) {
     if (s.substeps > 0) return s.substeps;
-    return std::max(1, static_cast<int>(std::ceil(h * 480.0 - 1e-9)));
+    return std::max(1, static_cast<int>(std::ceil(h * kSubstepRate - 1e-9)));
 }
 
 } // namespace tumble::physics

@@ -38,10 +38,12 @@ void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& po
     bodies_.delta.resize(n);
     bodies_.turn.resize(n);
     bodies_.rotates.resize(n);
+    bodies_.rounding.resize(n);
     bodies_.accel.resize(n);
     bodies_.ang_accel.resize(n);
     pool.for_ranges(n, 256, [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i) {
+            bodies_.rounding[i] = m.shape[i].kind == ShapeKind::Capsule ? m.shape[i].radius : 0.0;
             if (!awake_[i]) continue;
             bodies_.isotropic[i] = m.isotropic[i];
             bodies_.inv_i[i] = m.inv_inertia[i].x();
@@ -160,6 +162,8 @@ void ContactStage::prepare_constraints(const Model& m, const State& s, ThreadPoo
 // The substep h' = h / n and the soft contact's coefficients at that substep (contact_solver.h).
 void ContactStage::prepare_context(const Model& m) {
     substeps_ = substep_count(m.contact, h_);
+    iterations_ = m.contact.iterations;
+    relax_iterations_ = m.contact.relax_iterations;
     const double h = h_ / substeps_;
     ctx_ = SolverContext{};
     const double hertz = m.contact.contact_hertz_fraction / h;

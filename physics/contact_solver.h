@@ -43,10 +43,13 @@ struct TangentMass {
 };
 
 struct SolverPoint {
-    Vec3 ra, rb;            // anchors from the centres of mass at the start of the step, world
-    double base_separation; // s0 - n.(rb - ra): with the bodies' motion d, s = base + n.(dB - dA)
+    Vec3 ra, rb;            // anchors from the centres of mass, world, turned with the bodies
+    Vec3 core_a, core_b;    // what turns with each body: the anchor at the start of the step,
+                            // moved by a capsule's radius onto its core segment
+    double base_separation; // s0 - n.(rb0 - ra0): with the bodies' motion d, s = base + n.(dB +
+                            // rB - dA - rA) at the current anchors
     double separation0;     // s0, m
-    double normal_mass;     // 1/k along n
+    double normal_mass;     // 1/k along n, at the current anchors and orientations
     TangentMass tangent_mass;
     double normal_impulse; // accumulated over the step (warm-started)
     double friction_impulse[2];
@@ -78,6 +81,7 @@ struct SolverBodies {
     std::vector<Vec3> delta;           // motion since the start of the step, at the last update
     std::vector<Mat3> turn;            // rotation since the start of the step, at the last update
     std::vector<std::uint8_t> rotates; // anchors turn with the body (not for spheres)
+    std::vector<double> rounding;      // m: a capsule's radius (its anchors turn about its core)
     std::vector<Vec3> accel;           // F / m, m/s^2 (gravity and applied force)
     std::vector<Vec3> ang_accel;       // I_w^-1 tau_applied, rad/s^2
 };
@@ -94,6 +98,11 @@ struct SolverContext {
 // Effective masses, tangents, anchors; warm-start impulses already in `points`.
 void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
                       const State& state);
+
+// Anchors turned with their bodies (r = turn r0) and the effective masses recomputed with them and
+// the current I_w^-1: impulses go where the contact now is, through the inertia the body now has.
+// No-op unless a body of the manifold turns.
+void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies);
 
 void warm_start(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
                 State& state);

@@ -42,6 +42,7 @@ struct ContactStats {
     int impacts = 0;     // impact sweeps that applied an impulse
     int awake = 0;       // dynamic bodies simulated (not asleep)
     int substeps = 0;
+    int sweeps = 0;         // solve plus relax sweeps per substep
     int workers = 1;        // threads the step used (ContactSettings::parallel_min_bodies)
     double max_overlap = 0; // m, deepest contact point at the start of the step
 };
@@ -91,6 +92,8 @@ class ContactStage {
     void solve(State& s, ThreadPool& pool);
     void integrate_substep(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
     void relax(const Model& m, State& s, ThreadPool& pool);
+    void follow_bodies(ThreadPool& pool);
+    void sweep_constraints(State& s, ThreadPool& pool, bool use_bias);
     void track_motion(const Model& m, const State& s, ThreadPool& pool);
     void integrate_awake(const Model& m, State& s, IntegrateFn integrate, double h,
                          ThreadPool& pool);
@@ -133,6 +136,8 @@ class ContactStage {
     int colour_count_ = 0;
     SolverContext ctx_; // the substep and the soft contact's coefficients
     int substeps_ = 1;
+    int iterations_ = 1;       // solve sweeps per substep
+    int relax_iterations_ = 1; // relax sweeps per substep
 
     // Bodies the substeps touch.
     std::vector<int> constrained_, sleeping_;

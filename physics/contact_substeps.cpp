@@ -7,6 +7,7 @@ namespace tumble::physics {
 
 void ContactStage::substeps(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool) {
     stats_.substeps = substeps_;
+    stats_.sweeps = iterations_ + relax_iterations_;
     const int nc = static_cast<int>(constrained_.size());
     solved_v_.resize(nc);
     before_x_.resize(nc);
@@ -28,6 +29,7 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
     Stopwatch clock;
     integrate_awake(m, s, integrate, h_, pool);
     stats_.substeps = 1;
+    stats_.sweeps = 0;
     stats_.impacts = 0;
     profile_.integrate = clock.lap();
 }
@@ -35,21 +37,31 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
 // a. Predict: the solver sees the velocities the loads would give at the substep's end.
 void ContactStage::predict(const Model& m, State& s, ThreadPool& pool) {
     track_motion(m, s, pool);
+    follow_bodies(pool);
     for (int i : constrained_) {
         s.v[i] += ctx_.h * bodies_.accel[i];
         s.w[i] += ctx_.h * bodies_.ang_accel[i];
     }
 }
 
-// b. Warm start and solve with the soft push-out.
+// b. Warm start, then `iterations` Gauss-Seidel sweeps with the soft push-out. One sweep carries a
+// change of load one contact down a stack per substep; a stack of 5 boxes then rocked, and a cube
+// 1000 times heavier than the one below it slid off it (docs/contacts.md).
 void ContactStage::solve(State& s, ThreadPool& pool) {
     for_each_colour(pool, [&](int begin, int end, int) {
         for (int c = begin; c < end; ++c)
             warm_start(manifolds_[c], &points_[manifolds_[c].first], bodies_, s);
     });
+    for (int sweep = 0; sweep < iterations_; ++sweep) sweep_constraints(s, pool, true);
+}
+
+// One Gauss-Seidel sweep over every constraint, colour by colour; with the push-out bias (solve)
+// or without (relax).
+void ContactStage::sweep_constraints(State& s, ThreadPool& pool, bool use_bias) {
     for_each_colour(pool, [&](int begin, int end, int) {
         for (int c = begin; c < end; ++c)
-            solve_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, true, s);
+            solve_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, use_bias,
+                           s);
     });
 }
 
@@ -75,13 +87,12 @@ void ContactStage::integrate_substep(const Model& m, State& s, IntegrateFn integ
     }
 }
 
-// d. Relax: solve again without the push-out bias, so that it moved positions only.
+// d. Relax: solve again without the push-out bias, so that it moved positions only. Two sweeps:
+// one left a pair of boxes pushed apart face on face with 2.4% of the push as kinetic energy.
 void ContactStage::relax(const Model& m, State& s, ThreadPool& pool) {
     track_motion(m, s, pool);
-    for_each_colour(pool, [&](int begin, int end, int) {
-        for (int c = begin; c < end; ++c)
-            solve_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, false, s);
-    });
+    follow_bodies(pool);
+    for (int sweep = 0; sweep < relax_iterations_; ++sweep) sweep_constraints(s, pool, false);
 }
 
 // Motion of each constrained body since the start of the step, and its world inverse inertia
@@ -100,6 +111,15 @@ void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool
                 bodies_.inv_inertia[i] = r * m.inv_inertia[i].asDiagonal() * r.transpose();
             }
         }
+    });
+}
+
+// Anchors and effective masses at the bodies' current orientation (follow_manifold,
+// contact_solver.cpp), for the manifolds with a body that turns.
+void ContactStage::follow_bodies(ThreadPool& pool) {
+    for_each_colour(pool, [&](int begin, int end, int) {
+        for (int c = begin; c < end; ++c)
+            follow_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_);
     });
 }
 

@@ -30,15 +30,16 @@
 //               Newton collisions, swept until no impact is left, energy-consistent with the bounce
 //               happening inside the step; an isolated bounce is moved to its moment of contact
 //               once the substeps are done (contact_impacts.cpp).
-//   5. substeps n = ceil(h / (1/480 s)) times (contact_model.h), with h' = h / n
+//   5. substeps n = ceil(h / (1/1440 s)) times (contact_model.h), with h' = h / n
 //               (contact_substeps.cpp):
-//        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact
-//        b. solve      warm start, then one Gauss-Seidel sweep: soft non-penetration (pushes
+//        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact; anchors and
+//                      effective masses follow the bodies' turn since the step's start
+//        b. solve      warm start, then 3 Gauss-Seidel sweeps: soft non-penetration (pushes
 //                      overlap out as a stiff damped spring), Coulomb friction with two
 //                      tangents clamped to the disc mu lambda_n (contact_solver.h)
 //        c. integrate  the named integrator over h' for every awake body (rotation, gyroscopic
 //                      term, free flight); bodies in contact then move by x += h' v_solved
-//        d. relax      one more sweep without the push-out bias, so position correction never
+//        d. relax      2 more sweeps without the push-out bias, so position correction never
 //                      becomes kinetic energy
 //   6. store    impulses into this step's contacts, which become the State's contact cache (the
 //               warm start of the next step; contact_store.cpp).

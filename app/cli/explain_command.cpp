@@ -56,9 +56,11 @@ void print_contacts(const physics::Model& m) {
     for (int i = 0; i < m.body_count(); ++i) shapes += !m.is_dynamic(i);
     const int substeps = physics::substep_count(m.contact, m.dt);
     std::printf("  contacts       on: %s (first of %lld pairs checked); %d bodies collide "
-                "(%d static, %zu dynamic); %d substep%s of %.3g ms per step; ",
+                "(%d static, %zu dynamic); %d substep%s of %.3g ms per step, %d solve and %d relax "
+                "sweeps each; ",
                 t.why.c_str(), t.pairs_checked, m.body_count(), shapes, m.dynamic_bodies.size(),
-                substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps);
+                substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps, m.contact.iterations,
+                m.contact.relax_iterations);
     if (m.contact.sleeping)
         std::printf("sleeping on (bodies slower than %g m/s for %g s stop)\n",
                     m.contact.sleep_speed, m.contact.time_to_sleep);
@@ -109,7 +111,7 @@ void print_contact_checks(const physics::Model& m, const physics::State& s) {
             continue;
         }
         std::printf("  %-16s warning: fails%s: %s; the scene has %s. See the contact map of "
-                    "`tumble study` for the steps and substeps that hold\n",
+                    "`tumble study` for the steps, substeps and iterations that hold\n",
                     c.c.label.c_str(), c.run.diverged ? " (diverged)" : "", c.c.bound.c_str(),
                     c.resemblance.c_str());
         std::fprintf(stderr,

@@ -31,6 +31,8 @@ void read_world(JsonReader r, Scene& s) {
     if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
     if (auto v = r.optional("substeps"))
         c.substeps = v->integer(0, 64, "contact substeps per step (0: automatic)");
+    if (auto v = r.optional("iterations"))
+        c.iterations = v->integer(1, 64, "contact solve sweeps per substep, 1..64");
     if (auto v = r.optional("restitution_threshold"))
         c.restitution_threshold = v->non_negative("an impact speed >= 0 in m/s");
     if (auto v = r.optional("parallel_min_bodies"))

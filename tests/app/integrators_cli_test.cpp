@@ -39,7 +39,11 @@ TEST(IntegratorsCli, ExplainSaysWhichStagesAreOnAndWhy) {
                          "(9.81 m/s^2)"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find("2 substeps of 2.08 ms per step; sleeping on"), std::string::npos)
+    // h = 1/240 s at 1440 substeps per second (physics/contact_model.h: kSubstepRate): 6 of
+    // 1/1440 s = 0.694 ms.
+    EXPECT_NE(r.out.find("6 substeps of 0.694 ms per step, 3 solve and 2 relax sweeps each; "
+                         "sleeping on"),
+              std::string::npos)
         << r.out;
 }
 

@@ -110,6 +110,9 @@ TEST(IndependentTruths, UnequalFrictionsMixAsTheGeometricMean) {
 TEST(IndependentTruths, ASlidingBoxStopsOverTheClosedFormDistance) {
     const double g = 9.81, mu = 0.5, v0 = 3.0;
     const double distance = v0 * v0 / (2.0 * mu * g), stop = v0 / (mu * g);
+    // Stopped: slower than 0.1 mm/s (friction takes that in 20 us). Once stopped the box keeps a
+    // residual rock of about 1e-6 m/s for a few steps, as the load settles on its four corners.
+    constexpr double kStopped = 1e-4;
     for (double dt : {1.0 / 960.0, 1.0 / 480.0, 1.0 / 240.0}) {
         scenes::Scene s = scenes::incline(0.0, mu, dt, false); // a level "ramp"
         s.bodies[1].velocity = Vec3(v0, 0, 0);
@@ -118,7 +121,7 @@ TEST(IndependentTruths, ASlidingBoxStopsOverTheClosedFormDistance) {
         double stopped_at = -1.0;
         for (int k = 0; k < run.steps_for(2.0 * stop); ++k) {
             run.steps(1);
-            if (stopped_at < 0.0 && run.state.v[1].x() <= 1e-9) stopped_at = (k + 1) * dt;
+            if (stopped_at < 0.0 && run.state.v[1].x() <= kStopped) stopped_at = (k + 1) * dt;
         }
         const double slid = run.state.x[1].x() - x0;
         const double distance_error = std::abs(slid / distance - 1.0);
