@@ -46,12 +46,7 @@ bool ensure_writable_directory(const fs::path& dir) {
     std::error_code ec;
     bool created = false;
     if (!dir.empty() && !fs::exists(dir, ec)) {
-        const fs::path parent = dir.parent_path();
-        if (!parent.empty() && !fs::is_directory(parent, ec)) {
-            throw FileError("cannot create directory '" + dir.string() + "': its parent '" +
-                            parent.string() + "' does not exist or is not a directory");
-        }
-        created = fs::create_directory(dir, ec);
+        created = fs::create_directories(dir, ec);
         if (ec) {
             throw FileError("cannot create directory '" + dir.string() + "': " + ec.message());
         }

@@ -26,9 +26,9 @@ struct FileError : std::runtime_error {
 // "dir/name.ext" -> "dir/.name.ext.<pid>.partial"
 std::filesystem::path temporary_path_for(const std::filesystem::path& final_path);
 
-// Makes sure `dir` is a directory this process can create files in, creating it if missing (one
-// level only: its parent must exist). Throws FileError naming the directory otherwise. An empty
-// path means the current directory. Returns true when it created the directory.
+// Makes sure `dir` is a directory this process can create files in, creating it and any missing
+// parents (one rule for every command's output: issue 14). Throws FileError naming the directory
+// otherwise. An empty path means the current directory. Returns true when it created `dir`.
 bool ensure_writable_directory(const std::filesystem::path& dir);
 
 // Owns one temporary file until commit() renames it to the final name. If neither commit() nor

@@ -9,7 +9,9 @@
 //                              directory called null is written as "null/")
 // Every file is written under a temporary name in the same directory and renamed only when it is
 // complete, so an interrupted or failed run never leaves a half-written file behind. A missing
-// output directory is created (one level: its parent must exist).
+// output directory is created, with its parents. A PNG sequence refuses a folder that already
+// holds frames of its pattern (a later `ffmpeg -i %06d.png` would mix the stale ones in) unless
+// `overwrite`, which first removes exactly those frame files.
 //
 // Typical use (the app's render loop; Ctrl-C sets a flag, the loop stops and calls finish()):
 //   auto sink = open_sink("out/default.mp4", {.width = 1280, .height = 720, .fps = 60});
@@ -46,7 +48,8 @@ struct SinkOptions {
     // Extra libx264 settings, "key=value:key=value" (x264 --fullhelp), for experiments. Added
     // after the sink's own "cpu-independent=1" (see video_sink.h), so they can override it.
     std::string x264_params;
-    PngWriteOptions png; // encoder and zlib level of PNG sinks
+    PngWriteOptions png;    // encoder and zlib level of PNG sinks
+    bool overwrite = false; // PNG sequence: replace frames of the pattern already in the folder
 };
 
 class FrameSink {

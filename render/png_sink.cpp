@@ -1,5 +1,6 @@
 #include "render/png_sink.h"
 
+#include <algorithm>
 #include <cctype>
 #include <system_error>
 
@@ -79,6 +80,31 @@ std::optional<FramePattern> FramePattern::of_output(const std::string& output) {
     return parse(output);
 }
 
+std::vector<fs::path> FramePattern::existing_frames() const {
+    const fs::path first(name(0));
+    const fs::path dir = first.parent_path().empty() ? fs::path(".") : first.parent_path();
+    const std::string head = fs::path(prefix + "0").filename().string();
+    const std::string lead = head.substr(0, head.size() - 1); // the prefix's file-name part
+    std::vector<fs::path> out;
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string file = it->path().filename().string();
+        if (file.size() <= lead.size() + suffix.size() || !file.starts_with(lead) ||
+            !file.ends_with(suffix))
+            continue;
+        const std::string digits =
+            file.substr(lead.size(), file.size() - lead.size() - suffix.size());
+        const bool numeric =
+            std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+        const bool spaced = digits.find_first_not_of(' ') != std::string::npos;
+        if ((numeric || (!zero_pad && spaced)) && (!zero_pad || (int)digits.size() >= width) &&
+            it->is_regular_file(ec))
+            out.push_back(it->path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 // ---- PngSequenceSink ---------------------------------------------------------------------------
 
 PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& options)
@@ -88,6 +114,20 @@ PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& option
         if (io::ensure_writable_directory(dir)) created_directory_ = dir;
     } catch (const io::FileError& e) {
         throw SinkError("cannot write '" + pattern_.text + "': " + e.what());
+    }
+    // Frames of an earlier run: fewer new frames would leave the rest behind, and a later
+    // `ffmpeg -i frames/%06d.png` would play them as if they were this run's.
+    const std::vector<fs::path> stale = pattern_.existing_frames();
+    if (!stale.empty() && !options_.overwrite)
+        throw SinkError("'" + pattern_.text + "': the folder already holds " +
+                        std::to_string(stale.size()) + " frame" + (stale.size() == 1 ? "" : "s") +
+                        " of this pattern (" + stale.front().string() +
+                        (stale.size() > 1 ? " ... " + stale.back().string() : "") +
+                        "); choose another folder, or pass --overwrite to remove them first");
+    for (const fs::path& f : stale) {
+        std::error_code ec;
+        fs::remove(f, ec);
+        if (ec) throw SinkError("cannot remove '" + f.string() + "': " + ec.message());
     }
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tumble::render {
 
@@ -30,13 +31,17 @@ struct FramePattern {
     // existing directory) gives in_directory(), a name with a conversion its pattern; a single
     // file gives nothing. Throws SinkError for a malformed pattern (as parse()).
     static std::optional<FramePattern> of_output(const std::string& output);
+    // The files already in the pattern's folder that it could have written: the prefix, one or
+    // more digits (at least `width` when zero-padded), the suffix. Sorted by name.
+    std::vector<std::filesystem::path> existing_frames() const;
 };
 
 // Frame k goes to pattern.name(k), each file written atomically by write_png as it arrives.
 class PngSequenceSink final : public FrameSink {
   public:
-    // Creates the directory of the pattern if missing (one level). Throws SinkError when it
-    // cannot, or when the directory is not writable.
+    // Creates the directory of the pattern if missing, with its parents. Throws SinkError when it
+    // cannot, when the directory is not writable, or when it already holds frames of the pattern
+    // and options.overwrite is off (with it, those files, and only those, are removed first).
     PngSequenceSink(FramePattern pattern, const SinkOptions& options);
     ~PngSequenceSink() override { abort(); }
 

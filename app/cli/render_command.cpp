@@ -56,6 +56,9 @@ void add_switches(CLI::App* r, RenderCommand& render) {
     on_off("vectors", render.vectors,
            "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
+    r->add_flag("--overwrite", render.overwrite,
+                "a PNG folder holding frames of an earlier run: remove those frames first "
+                "(only files named like the pattern; refused otherwise)");
     r->add_option("--compare", render.compare,
                   "integrators to draw side by side, e.g. euler,symplectic_euler,rk4,splitting")
         ->delimiter(',');

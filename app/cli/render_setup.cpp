@@ -72,6 +72,7 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
     options.height = scene.render.height;
     options.fps = scene.render.fps;
     options.crf = cmd.crf;
+    options.overwrite = cmd.overwrite;
     options.preset = video_preset(cmd);
     remove_stale_temporaries_for(output, cmd.common.quiet);
     try {

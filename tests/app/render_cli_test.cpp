@@ -6,6 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
 namespace tumble::test {
 namespace {
 
@@ -102,6 +107,36 @@ TEST(RenderCli, SwitchesChangeThePictureAndStatsReportEveryStage) {
     for (const char* stage : {"physics", "render", "output", "end-to-end"})
         EXPECT_NE(r.err.find(stage), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("10 frames"), std::string::npos) << r.err;
+}
+
+std::vector<std::string> list_dir(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// One output rule (issue 14): a frame folder holding an earlier run's frames is refused (exit 2,
+// the old frames kept) unless --overwrite, which leaves exactly this run's frames; missing parent
+// folders are created for every command (study included).
+TEST(RenderCli, AStaleFrameFolderIsRefusedUnlessOverwriteAndParentsAreCreated) {
+    const auto dir = scratch_dir();
+    write_text(dir / "scene.json", kScene);
+    const std::string run = "render scene.json --width 32 --height 20 -q -o deep/er/frames/";
+    ASSERT_EQ(run_tumble(dir, run).exit_code, 0); // 0.5 s at 20 fps: 10 frames
+    EXPECT_EQ(list_dir(dir / "deep/er/frames").size(), 10u);
+    const CliResult again = run_tumble(dir, run + " --duration 0.1");
+    EXPECT_EQ(again.exit_code, 2);
+    EXPECT_NE(again.err.find("already holds 10 frames"), std::string::npos) << again.err;
+    EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+    EXPECT_EQ(list_dir(dir / "deep/er/frames").size(), 10u);
+    ASSERT_EQ(run_tumble(dir, run + " --duration 0.1 --overwrite").exit_code, 0);
+    EXPECT_EQ(list_dir(dir / "deep/er/frames"),
+              (std::vector<std::string>{"000000.png", "000001.png"}));
+    const CliResult study = run_tumble(dir, "study --quick -q -o a/b/c");
+    EXPECT_EQ(study.exit_code, 0) << study.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a/b/c/report.md"));
 }
 
 TEST(RenderCli, BadMaterialAndCameraAreNamedByPath) {

@@ -146,9 +146,59 @@ TEST(OpenSink, UnwritableOrMissingDirectoryIsNamed) {
     for (const char* output : {"file/out.mp4", "file/out.png", "file/frames/", "file/%04d.png"}) {
         expect_open_error((dir / output).string(), {(dir / "file").string()});
     }
-    // Only one missing level is created; a deeper missing path is an error naming the parent.
-    expect_open_error((dir / "a" / "b" / "out.mp4").string(), {(dir / "a").string(), "parent"});
     EXPECT_EQ(list_dir(dir), std::vector<std::string>{"file"});
+}
+
+// One rule for every output (issue 14): missing parents are created, however deep.
+TEST(OpenSink, MissingParentsAreCreated) {
+    const fs::path dir = fresh_artifact_dir();
+    auto still = open_sink((dir / "a" / "b" / "still.png").string(), {});
+    still->write(test::rendered_like(16, 12));
+    still->finish();
+    auto frames = open_sink((dir / "c" / "d" / "frames").string() + "/", {});
+    frames->write(test::rendered_like(16, 12));
+    frames->finish();
+    EXPECT_EQ(list_dir(dir / "a" / "b"), std::vector<std::string>{"still.png"});
+    EXPECT_EQ(list_dir(dir / "c" / "d" / "frames"), std::vector<std::string>{"000000.png"});
+}
+
+// The files a pattern could have written: prefix, digits (zero-padded: at least the width), suffix.
+TEST(FramePattern, ExistingFramesAreExactlyThePatternsFiles) {
+    const fs::path dir = fresh_artifact_dir();
+    for (const char* name : {"000000.png", "000017.png", "1234567.png", "12.png", "00000a.png",
+                             "000003.jpg", "notes.txt", "x000001.png"})
+        std::ofstream(dir / name) << "x";
+    std::vector<std::string> found;
+    for (const fs::path& p : FramePattern::in_directory(dir).existing_frames())
+        found.push_back(p.filename().string());
+    EXPECT_EQ(found, (std::vector<std::string>{"000000.png", "000017.png", "1234567.png"}));
+    found.clear();
+    for (const fs::path& p : FramePattern::parse((dir / "x%d.png").string())->existing_frames())
+        found.push_back(p.filename().string());
+    EXPECT_EQ(found, std::vector<std::string>{"x000001.png"});
+}
+
+// Six new frames over thirty old ones would leave 24 stale frames for a later `ffmpeg -i
+// %06d.png` to play: refused, the old frames untouched; with overwrite, the old frames (and only
+// files of the pattern) are removed first.
+TEST(PngSequenceSink, AFolderWithFramesOfAnotherRunIsRefusedUnlessOverwrite) {
+    const fs::path dir = fresh_artifact_dir();
+    {
+        auto old = open_sink(dir.string() + "/", {});
+        for (int k = 0; k < 30; ++k) old->write(test::rendered_like(16, 12, k));
+        old->finish();
+    }
+    std::ofstream(dir / "README.txt") << "keep me";
+    expect_open_error(dir.string() + "/", {"30 frames", "--overwrite"});
+    EXPECT_EQ(list_dir(dir).size(), 31u); // nothing removed
+    SinkOptions options;
+    options.overwrite = true;
+    auto sink = open_sink(dir.string() + "/", options);
+    for (int k = 0; k < 6; ++k) sink->write(test::rendered_like(16, 12, k));
+    sink->finish();
+    EXPECT_EQ(list_dir(dir),
+              (std::vector<std::string>{"000000.png", "000001.png", "000002.png", "000003.png",
+                                        "000004.png", "000005.png", "README.txt"}));
 }
 
 TEST(FramePattern, FormatsWidthPaddingAndPercent) {
