@@ -271,7 +271,7 @@ void Renderer::draw(const SceneView& view, Image& out) {
     r.sky_pass(view, m);
     if (r.msaa) r.msaa->resolve_into(r.target);
     if (!view.overlay.empty()) {
-        if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.height);
+        if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.width, o.height);
         r.target.bind();
         r.overlay->draw(view.overlay, o.width, o.height);
     }

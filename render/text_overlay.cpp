@@ -21,12 +21,13 @@ const float kPanelColor[4] = {0.05f, 0.06f, 0.08f, 0.55f};
 
 } // namespace
 
-TextOverlay::TextOverlay(int image_height)
+TextOverlay::TextOverlay(int image_width, int image_height)
     : program_(shader_asset("text.vert"), shader_asset("text.frag")) {
     const std::string_view font = assets::find(kFont);
     if (font.empty()) throw RenderError(std::string("font ") + kFont + " is not embedded");
     const auto* data = reinterpret_cast<const unsigned char*>(font.data());
-    pixel_height_ = std::max(11.0f, std::round(float(image_height) / 40.0f));
+    pixel_height_ = std::max(
+        9.0f, std::round(std::min(float(image_height) / 40.0f, float(image_width) / 32.0f)));
     atlas_width_ = pixel_height_ > 24 ? 1024 : 512;
     atlas_height_ = pixel_height_ > 48 ? 1024 : 512;
     std::vector<unsigned char> atlas(std::size_t(atlas_width_) * std::size_t(atlas_height_));

@@ -54,6 +54,10 @@ void SideBySide::draw_lane(Lane& lane) {
     if (!lane.diverged.empty()) return;
     try {
         lane.frames->next(lane.view);
+        // Without the overlay a tile still says which method it is.
+        if (lane.view.overlay.empty())
+            lane.view.overlay.assign(
+                1, std::string(physics::integrator_info(lane.sim.model.integrator).name));
         renderer_->draw(lane.view, lane.tile);
     } catch (const physics::DivergenceError& e) {
         lane.diverged = e.what();

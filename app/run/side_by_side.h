@@ -7,7 +7,8 @@
 // every frame, each is drawn by one Renderer at the tile's size and copied into its tile of a grid
 // (1 x 2 for two, 2 x 2 for up to four, 3 x 2 for six, 3 x 3 for nine), with a dark gutter of
 // kGutter pixels between tiles. A tile is exactly the picture `tumble render --integrator NAME`
-// draws at the tile's size (tested), so the comparison hides nothing. A method that diverges stops
+// draws at the tile's size (tested), so the comparison hides nothing; without the overlay the
+// tile is labelled with the method's name in the overlay's corner. A method that diverges stops
 // there: its tile keeps the last frame it drew, darkened, and its message is kept; the others go
 // on.
 #include "app/run/frame_source.h"

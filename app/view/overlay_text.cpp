@@ -23,14 +23,16 @@ void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
     const double drift = relative ? (e - e0) / std::abs(e0) : e - e0;
     set_line(lines[0], "t %.4f s   step %lld", o.t, static_cast<long long>(o.step));
     set_line(lines[1], "%s   h %.4g ms", std::string(o.integrator).c_str(), o.h * 1e3);
+    // The digits that mean something, in fields of fixed width (the text must not jiggle): E to
+    // six significant digits, its drift to two, momenta to three.
     if (relative)
-        set_line(lines[2], "E %+.9e J   dE/|E0| %+.1e", e, drift);
+        set_line(lines[2], "E %#+11.6g J  dE/|E0| %+.1e", e, drift);
     else
-        set_line(lines[2], "E %+.9e J   dE %+.1e J", e, drift);
+        set_line(lines[2], "E %#+11.6g J  dE %+.1e J", e, drift);
     const physics::Vec3& p = o.now.linear_momentum;
     const physics::Vec3& l = o.now.angular_momentum;
-    set_line(lines[3], "p %+.3e %+.3e %+.3e kg m/s", p.x(), p.y(), p.z());
-    set_line(lines[4], "L %+.3e %+.3e %+.3e kg m^2/s", l.x(), l.y(), l.z());
+    set_line(lines[3], "p %#+10.3g %#+10.3g %#+10.3g kg m/s", p.x(), p.y(), p.z());
+    set_line(lines[4], "L %#+10.3g %#+10.3g %#+10.3g kg m^2/s", l.x(), l.y(), l.z());
 }
 
 } // namespace tumble::app

@@ -52,6 +52,32 @@ TEST(Compare, EachTileIsThePlainRenderOfItsIntegrator) {
     EXPECT_FALSE(left.rgb == right.rgb); // the methods have parted (and the labels differ)
 }
 
+// Without the overlay each tile still names its method (issue 14, item 6): a tile differs from
+// the plain render only in its top-left corner, where the label is, and there it does.
+TEST(Compare, TilesAreLabelledWithoutTheOverlay) {
+    const auto dir = scratch_dir();
+    write_text(dir / "s.json", kScene);
+    CliResult r = run_tumble(dir, "render s.json --compare euler,rk4 --no-overlay --width 322 "
+                                  "--height 96 --frame 16 -o both.png -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const render::Image both = render::read_png(dir / "both.png");
+    for (const auto& [name, x0] : {std::pair{"euler", 0}, std::pair{"rk4", 162}}) {
+        r = run_tumble(dir, std::string("render s.json --no-overlay --integrator ") + name +
+                                " --width 160 --height 96 --frame 16 -o plain.png -q");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const render::Image tile = crop(both, x0, 0, 160, 96);
+        const render::Image plain = render::read_png(dir / "plain.png");
+        int inside = 0, outside = 0;
+        for (int y = 0; y < 96; ++y)
+            for (int x = 0; x < 160; ++x) {
+                const bool differs = std::memcmp(tile.row(y) + 3 * x, plain.row(y) + 3 * x, 3);
+                (x < 96 && y < 40 ? inside : outside) += differs;
+            }
+        EXPECT_GT(inside, 20) << name << ": no label";
+        EXPECT_EQ(outside, 0) << name;
+    }
+}
+
 TEST(Compare, WritesAVideoAndSummarisesEachMethod) {
     const auto dir = scratch_dir();
     write_text(dir / "s.json", kScene);
