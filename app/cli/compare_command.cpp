@@ -53,7 +53,8 @@ void print_summary(const SideBySide& tiles, const render::FrameSink& sink, std::
 
 } // namespace
 
-int run_compare(const RenderCommand& cmd) {
+int run_compare(const RenderCommand& command) {
+    RenderCommand cmd = command;
     if (cmd.common.integrator)
         throw SceneError("--integrator", *cmd.common.integrator,
                          "not with --compare, which names the integrators itself");
@@ -62,6 +63,8 @@ int run_compare(const RenderCommand& cmd) {
     if (!cmd.overlay) scene.render.overlay = true; // each tile is labelled by its overlay
     const auto methods = parse_methods(cmd.compare);
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
+        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
     const std::int64_t first = cmd.frame.value_or(0), last = cmd.frame.value_or(tl.frames - 1);
     tune_allocator_for_rendering();

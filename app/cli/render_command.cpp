@@ -27,7 +27,11 @@ void add_render_options(CLI::App* r, RenderCommand& render) {
     r->add_option("--width", render.width, "image width, pixels (even for MP4)");
     r->add_option("--height", render.height, "image height, pixels (even for MP4)");
     r->add_option("--fps", render.fps, "frames per second");
-    r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
+    auto* frame =
+        r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
+    r->add_option("--time", render.time,
+                  "render only the frame shown at t = SECONDS (the nearest frame) to a .png still")
+        ->excludes(frame);
     r->add_option(
          "--crf", render.crf,
          "quality, lower is better: H.264 (.mp4) 0..51, VP9 (.webm) 0..63 (checked by the sink)")
@@ -86,11 +90,14 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 
-int run_render(const RenderCommand& cmd) {
-    if (!cmd.compare.empty()) return run_compare(cmd);
+int run_render(const RenderCommand& command) {
+    if (!command.compare.empty()) return run_compare(command);
+    RenderCommand cmd = command;
     Scene scene = load_for_command(cmd.common);
     apply_render_overrides(cmd, scene);
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
+        std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
     if (const std::string note = threads_note(sim, cmd.common.threads);

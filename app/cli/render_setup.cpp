@@ -5,6 +5,8 @@
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -33,6 +35,26 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
                          "expected 16x16 to 7680x4320 pixels (8K UHD, the largest frame Tumble "
                          "draws)");
     if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
+}
+
+std::string resolve_time(RenderCommand& cmd, const Timeline& tl) {
+    if (!cmd.time) return "";
+    const double t = *cmd.time;
+    const double last = tl.frame_time(tl.frames - 1);
+    char text[160];
+    std::snprintf(text, sizeof text, "%.9g", t);
+    if (!std::isfinite(t) || t < 0.0 || std::llround(t * tl.fps) > tl.frames - 1) {
+        char range[64];
+        std::snprintf(range, sizeof range, "expected a time in [0, %.9g] s", last);
+        throw SceneError("--time", text, range);
+    }
+    cmd.frame = std::llround(t * tl.fps);
+    if (std::abs(tl.frame_time(*cmd.frame) - t) <= 1e-9 * std::max(1.0, t)) return "";
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "t = %.9g s is between frames at %d fps: frame %lld, t = %.9g s", t, tl.fps,
+                  static_cast<long long>(*cmd.frame), tl.frame_time(*cmd.frame));
+    return note;
 }
 
 void check_frame_index(const RenderCommand& cmd, const Timeline& tl) {

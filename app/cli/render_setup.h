@@ -20,6 +20,7 @@ struct RenderCommand {
     std::string output; // empty: "<scene name>.mp4"
     std::optional<int> width, height, fps;
     std::optional<std::int64_t> frame; // render only this frame (to a still .png)
+    std::optional<double> time;        // or the frame shown at this time, s (resolve_time)
     int crf = 18;
     // Encoder preset; unset: "veryfast", or "ultrafast" with --preview (video_preset()).
     std::optional<std::string> preset;
@@ -41,7 +42,12 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
 // keeps it near the renderer's pace) and "veryfast" otherwise.
 std::string video_preset(const RenderCommand& cmd);
 
-// Throws SceneError when --frame names a frame outside the video.
+// --time T: sets `frame` to the frame shown at t = T, K = round(T fps). Returns a note when T
+// lies between frame times ("t = 1.01 s is between frames at 60 fps: frame 61, t = 1.01667 s"),
+// else "". Throws SceneError for a negative or non-finite T.
+std::string resolve_time(RenderCommand& cmd, const Timeline& tl);
+
+// Throws SceneError when --frame (or --time) names a frame outside the video.
 void check_frame_index(const RenderCommand& cmd, const Timeline& tl);
 
 // --output, or "<scene name><suffix>.mp4" (app/scene/scene.h: scene_name), or for --frame K

@@ -139,6 +139,27 @@ TEST(RenderCli, AStaleFrameFolderIsRefusedUnlessOverwriteAndParentsAreCreated) {
     EXPECT_TRUE(std::filesystem::exists(dir / "a/b/c/report.md"));
 }
 
+// --time SECONDS (issue 14): the still of the frame shown at that time, the same picture as
+// --frame K for K = round(T fps); between frame times the nearest frame, with a note; outside the
+// video refused with the range.
+TEST(RenderCli, TimeGivesTheStillOfTheNearestFrame) {
+    const auto dir = scratch_dir();
+    write_text(dir / "s.json", kScene); // 0.5 s at 20 fps: frames 0..9
+    const std::string base = "render s.json --width 64 --height 40 ";
+    ASSERT_EQ(run_tumble(dir, base + "--frame 5 -q -o frame.png").exit_code, 0);
+    ASSERT_EQ(run_tumble(dir, base + "--time 0.25 -q -o time.png").exit_code, 0);
+    EXPECT_EQ(read_text(dir / "frame.png"), read_text(dir / "time.png"));
+    const CliResult between = run_tumble(dir, base + "--time 0.26 -o between.png");
+    EXPECT_EQ(between.exit_code, 0) << between.err;
+    EXPECT_NE(between.err.find("between frames at 20 fps: frame 5, t = 0.25 s"), std::string::npos)
+        << between.err;
+    EXPECT_EQ(read_text(dir / "frame.png"), read_text(dir / "between.png"));
+    const CliResult late = run_tumble(dir, base + "--time 0.6 -o late.png");
+    EXPECT_EQ(late.exit_code, 2);
+    EXPECT_NE(late.err.find("expected a time in [0, 0.45] s"), std::string::npos) << late.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "late.png"));
+}
+
 TEST(RenderCli, BadMaterialAndCameraAreNamedByPath) {
     const auto dir = scratch_dir();
     std::string scene = kScene;
