@@ -7,6 +7,7 @@
 #include "app/cli/failure.h"
 #include "app/cli/render_setup.h"
 #include "app/cli/subcommand.h"
+#include "app/run/auto_camera.h"
 #include "app/run/render_frames.h"
 #include "app/run/simulation.h"
 #include "io/bad_input.h"
@@ -97,6 +98,7 @@ PipelineStats run_once(const BenchCase& c, int frames, const std::string& output
     apply_render_overrides(cmd, scene);
     scene.duration = double(frames) / scene.render.fps;
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    frame_automatically(scene, tl); // camera.auto: a pre-pass over the run
     Simulation sim = make_simulation(scene, tl.h);
     render::SinkOptions so;
     so.width = scene.render.width;

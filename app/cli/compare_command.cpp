@@ -7,6 +7,7 @@
 #include "app/cli/compare_command.h"
 
 #include "app/cli/failure.h"
+#include "app/run/auto_camera.h"
 #include "app/run/interrupt.h"
 #include "app/run/progress.h"
 #include "app/run/render_frames.h"
@@ -68,10 +69,11 @@ int run_compare(const RenderCommand& command) {
     check_frame_index(cmd, tl);
     const std::int64_t first = cmd.frame.value_or(0), last = cmd.frame.value_or(tl.frames - 1);
     tune_allocator_for_rendering();
-    SideBySide tiles(scene, methods, tl, cmd.common.threads, first, last);
     InterruptGuard guard; // from before the output exists: no signal can leave it half-written
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output_name(cmd, scene, "-compare"));
+    frame_automatically(scene, tl); // camera.auto, once input and output are known to be good
+    SideBySide tiles(scene, methods, tl, cmd.common.threads, first, last);
     render::Image frame;
     Progress progress("comparing", last - first + 1, cmd.common.quiet);
     std::int64_t written = 0;

@@ -7,6 +7,7 @@
 #include "app/cli/failure.h"
 #include "app/cli/render_setup.h"
 #include "app/cli/subcommand.h"
+#include "app/run/auto_camera.h"
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
@@ -108,6 +109,9 @@ int run_render(const RenderCommand& command) {
     InterruptGuard guard;
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output_name(cmd, scene));
+    // camera.auto: a pre-pass over the run, once the input and the output are known to be good
+    // (a bad output name is exit 2 before any stepping).
+    frame_automatically(scene, tl);
     const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
     const auto t0 = std::chrono::steady_clock::now();
     const RunResult r = render_frames(scene, tl, sim, *sink, cmd.frame.value_or(0),

@@ -74,10 +74,28 @@ void read_path(JsonReader r, CameraRig& rig) {
     }
 }
 
+void read_auto(JsonReader a, CameraRig& rig) {
+    rig.mode = CameraRig::Mode::Auto;
+    if (a.value().is_boolean()) {
+        if (!a.boolean()) rig.mode = CameraRig::Mode::Fixed;
+        return;
+    }
+    if (auto d = a.optional("direction")) {
+        rig.auto_direction = read_dvec3(*d, "a direction from the target towards the camera");
+        if (glm::length(rig.auto_direction) == 0.0) d->fail("expected a non-zero direction");
+    }
+    if (auto m = a.optional("margin"))
+        rig.auto_margin = m->non_negative("a margin >= 0, a fraction of the half-frame");
+    a.finish();
+}
+
 } // namespace
 
 void read_camera_rig(JsonReader r, CameraRig& rig) {
     render::Camera& c = rig.base;
+    rig.mode = CameraRig::Mode::Fixed; // a camera given; "auto" below may choose it after all
+    if (r.has("auto") && (r.has("position") || r.has("target")))
+        r.fail("\"auto\" chooses the position and target; give its \"direction\" instead");
     if (auto p = r.optional("position"))
         c.position = read_glm_vec3(*p, "a camera position in metres");
     if (auto t = r.optional("target")) c.target = read_glm_vec3(*t, "a camera target in metres");
@@ -88,8 +106,9 @@ void read_camera_rig(JsonReader r, CameraRig& rig) {
         c.fov_y_deg = static_cast<float>(fov);
     }
     if (glm::length(c.position - c.target) == 0.0f) r.fail("camera position and target coincide");
-    if (int(r.has("orbit")) + int(r.has("follow")) + int(r.has("path")) > 1)
-        r.fail("give at most one of \"orbit\", \"follow\" and \"path\"");
+    if (int(r.has("orbit")) + int(r.has("follow")) + int(r.has("path")) + int(r.has("auto")) > 1)
+        r.fail("give at most one of \"orbit\", \"follow\", \"path\" and \"auto\"");
+    if (auto a = r.optional("auto")) read_auto(*a, rig);
     if (auto o = r.optional("orbit")) {
         rig.mode = CameraRig::Mode::Orbit;
         read_orbit(*o, rig);

@@ -7,6 +7,8 @@
 //           put and turns to look at it)
 //   path    keyframes {t, position, target, fov_deg}, interpolated smoothly (cubic Hermite with
 //           Catmull-Rom tangents, easing in and out at the first and last key)
+//   auto    one fixed camera that keeps every dynamic body in view for the whole run, chosen by
+//           a pre-pass (app/run/auto_camera.h); also what a scene without a camera gets
 // A camera is a pure function of time and the followed body's position: frame k's camera needs
 // no history, so a still of frame k is the same as frame k of a video.
 #include "app/scene/json_reader.h"
@@ -24,8 +26,10 @@ struct CameraKey {
 };
 
 struct CameraRig {
-    enum class Mode { Fixed, Orbit, Follow, Path };
-    Mode mode = Mode::Fixed;
+    // Auto: a fixed camera chosen by a pre-pass over the run (app/run/auto_camera.h), the mode
+    // of a scene that gives no camera; frame_automatically() turns it into Fixed before drawing.
+    enum class Mode { Fixed, Orbit, Follow, Path, Auto };
+    Mode mode = Mode::Auto;
     render::Camera base; // the fixed camera; up, fov and clip planes for every mode
 
     // orbit
@@ -44,6 +48,10 @@ struct CameraRig {
 
     // path
     std::vector<CameraKey> keys; // t strictly increasing, at least two
+
+    // auto
+    glm::dvec3 auto_direction{0.0}; // from the target towards the camera; 0: base's direction
+    double auto_margin = 0.1;       // of the half-frame, kept free on every side
 
     bool needs_body() const { return mode == Mode::Follow; }
 };

@@ -48,6 +48,7 @@ render::Camera camera_at(const CameraRig& rig, double t, const glm::dvec3& body)
     render::Camera c = rig.base;
     switch (rig.mode) {
     case CameraRig::Mode::Fixed:
+    case CameraRig::Mode::Auto: // not yet framed (app/run/auto_camera.h): the base camera
         break;
     case CameraRig::Mode::Orbit: {
         const double a = rig.start_angle + glm::two_pi<double>() * t / rig.period;

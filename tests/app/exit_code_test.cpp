@@ -57,12 +57,13 @@ TEST(ExitCodes, BadInputExitsTwoInEverySubcommand) {
         {"render s.json --frame 2 -o a.mp4", 2, "the output must end in .png"},
         {"render s.json --compare euler,nosuch -o a.mp4", 2, "unknown integrator"},
         {"simulate nosuch.json -o s.csv", 2, "nosuch.json: file: no such file"},
-        {"simulate s.json -o missing/deeper/s.csv", 2, "missing/deeper"},
+        // Missing parents are created (issue 14); a parent that is a file is bad input.
+        {"simulate s.json -o s.json/deeper/s.csv", 2, "'s.json/deeper': Not a directory"},
         {"explain nosuch.json", 2, "nosuch.json: file: no such file"},
         {"explain s.json --dt -1", 2, "--dt"},
         {"goldens check nosuch.json", 2, "nosuch.json"},
         {"diff nosuch.png other.png", 2, "nosuch.png"},
-        {"study --quick -q -o missing/deeper/study", 2, "missing"},
+        {"study --quick -q -o s.json/study", 2, "'s.json/study': Not a directory"},
         {"bench-render nosuch-case", 2, "unknown benchmark case"},
     });
 }

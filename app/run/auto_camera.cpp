@@ -1,0 +1,144 @@
+#include "app/run/auto_camera.h"
+
+#include "app/run/simulation.h"
+#include "physics/can_touch.h"
+#include "physics/model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace tumble::app {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+glm::dvec3 to_d(const physics::Vec3& v) {
+    return {v.x(), v.y(), v.z()};
+}
+
+// The scene's up axis: against gravity, or the rig's own up when there is no gravity.
+glm::dvec3 up_axis(const Scene& scene) {
+    const physics::Vec3 g = scene.world.gravity;
+    if (g.norm() > 0.0) return -to_d(g) / g.norm();
+    return glm::normalize(glm::dvec3(scene.render.camera.base.up));
+}
+
+// A sample of the motion: a sphere that must be in frame.
+struct Sample {
+    glm::dvec3 x;
+    double radius;
+};
+
+// The camera basis: d towards the camera, r to the right, u up on screen; and the half-frame
+// tangents with the margin taken off.
+struct Basis {
+    glm::dvec3 d, r, u;
+    double tan_h, tan_v;
+    Basis(const glm::dvec3& direction, const glm::dvec3& up, double fov_y_deg, double aspect,
+          double margin)
+        : d(glm::normalize(direction)), r(glm::normalize(glm::cross(up, d))), u(glm::cross(d, r)),
+          tan_h(0), tan_v(std::tan(0.5 * glm::radians(fov_y_deg)) / (1.0 + margin)) {
+        tan_h = tan_v * aspect;
+    }
+};
+
+// The nearest distance from the target c along d at which every sample is in frame: a sphere
+// (x, R) with q = x - c is when (|q.r| + R) / (D - q.d - R) <= tan_h, and the same for u.
+double fit_distance(const Basis& b, const glm::dvec3& c, const std::vector<Sample>& samples) {
+    double distance = 0.1; // a single resting point still gets some room
+    for (const Sample& s : samples) {
+        const glm::dvec3 q = s.x - c;
+        const double reach = glm::dot(q, b.d) + s.radius;
+        distance = std::max({distance, reach + (std::abs(glm::dot(q, b.r)) + s.radius) / b.tan_h,
+                             reach + (std::abs(glm::dot(q, b.u)) + s.radius) / b.tan_v});
+    }
+    return distance;
+}
+
+// Target and distance: start from the middle of the samples' extent, then move the target
+// across the view until the samples' extent on screen is centred (perspective makes the near
+// side look larger), standing back each time just as far as needed. Four rounds centre it to
+// well under a percent of the frame.
+render::Camera fit(const Basis& b, const glm::dvec3& up, const std::vector<Sample>& samples) {
+    glm::dvec3 lo(kInf), hi(-kInf);
+    for (const Sample& s : samples) lo = glm::min(lo, s.x), hi = glm::max(hi, s.x);
+    glm::dvec3 c = 0.5 * (lo + hi);
+    double distance = fit_distance(b, c, samples);
+    for (int round = 0; round < 4; ++round) {
+        double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+        for (const Sample& s : samples) {
+            const glm::dvec3 q = s.x - c;
+            const double depth = std::max(distance - glm::dot(q, b.d), 1e-9);
+            const double x = glm::dot(q, b.r) / depth, y = glm::dot(q, b.u) / depth;
+            const double rr = s.radius / depth;
+            x0 = std::min(x0, x - rr), x1 = std::max(x1, x + rr);
+            y0 = std::min(y0, y - rr), y1 = std::max(y1, y + rr);
+        }
+        c += distance * (0.5 * (x0 + x1) * b.r + 0.5 * (y0 + y1) * b.u);
+        distance = fit_distance(b, c, samples);
+    }
+    render::Camera cam;
+    cam.target = glm::vec3(c);
+    cam.position = glm::vec3(c + distance * b.d);
+    cam.up = glm::vec3(up);
+    cam.z_near = static_cast<float>(std::max(0.01, 0.02 * distance));
+    cam.z_far = static_cast<float>(std::max(200.0, 4.0 * (distance + glm::length(hi - lo))));
+    return cam;
+}
+
+} // namespace
+
+render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& direction,
+                         const glm::dvec3& up, double fov_y_deg, double aspect, double margin) {
+    std::vector<Sample> corners;
+    for (int k = 0; k < 8; ++k)
+        corners.push_back(
+            {glm::dvec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z), 0.0});
+    render::Camera cam = fit(Basis(direction, up, fov_y_deg, aspect, margin), up, corners);
+    cam.fov_y_deg = static_cast<float>(fov_y_deg);
+    return cam;
+}
+
+void frame_automatically(Scene& scene, const Timeline& tl) {
+    CameraRig& rig = scene.render.camera;
+    if (rig.mode != CameraRig::Mode::Auto) return;
+    const glm::dvec3 up = up_axis(scene);
+    glm::dvec3 direction = rig.auto_direction;
+    if (glm::length(direction) == 0.0)
+        direction = glm::dvec3(rig.base.position) - glm::dvec3(rig.base.target);
+    if (glm::length(glm::cross(glm::normalize(direction), up)) < 1e-6)
+        direction += 0.5 * glm::dvec3(up.y, up.z, up.x); // looking straight along up: tilt it
+    const double aspect = double(scene.render.width) / double(scene.render.height);
+    // Every body's bounding sphere at every frame while that stays small (a million samples,
+    // 32 MB); beyond, each frame's box around all of them (its corners, a looser fit).
+    Simulation sim = make_simulation(scene, tl.h);
+    const physics::Model& m = sim.model;
+    const bool every_body = double(tl.frames) * double(m.dynamic_bodies.size()) <= 1e6;
+    std::vector<Sample> samples;
+    for (std::int64_t k = 0; k < tl.frames; ++k) {
+        if (k > 0)
+            for (int s = 0; s < tl.steps_per_frame; ++s) sim.step();
+        glm::dvec3 lo(kInf), hi(-kInf);
+        for (int i : m.dynamic_bodies) {
+            const physics::Vec3& p = sim.state.x[i];
+            const glm::dvec3 x(p.x(), p.y(), p.z());
+            const double radius = physics::bounding_radius(m, i);
+            if (every_body) samples.push_back({x, radius});
+            lo = glm::min(lo, x - radius), hi = glm::max(hi, x + radius);
+        }
+        if (!every_body && !m.dynamic_bodies.empty())
+            for (int c = 0; c < 8; ++c)
+                samples.push_back(
+                    {glm::dvec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z),
+                     0.0});
+    }
+    if (samples.empty()) samples.push_back({glm::dvec3(rig.base.target), 0.0}); // nothing moves
+    const float fov = rig.base.fov_y_deg;
+    rig.base = fit(Basis(direction, up, fov, aspect, rig.auto_margin), up, samples);
+    rig.base.fov_y_deg = fov;
+    rig.mode = CameraRig::Mode::Fixed;
+}
+
+} // namespace tumble::app
