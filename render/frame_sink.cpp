@@ -1,6 +1,7 @@
 // open_sink: picks the sink from the output name (see frame_sink.h for the rules).
 #include "render/frame_sink.h"
 
+#include "render/gif_sink.h"
 #include "render/png_sink.h"
 #include "render/video_sink.h"
 
@@ -25,7 +26,8 @@ std::string lowercase(std::string text) {
 }
 
 const char* const kSupported =
-    "supported outputs: NAME.mp4 (H.264 video), NAME.webm (VP9 video), NAME.png (one still), a "
+    "supported outputs: NAME.mp4 (H.264 video), NAME.webm (VP9 video), NAME.gif (animated GIF, "
+    "one palette per video), NAME.png (one still), a "
     "directory such as "
     "frames/ (PNG sequence 000000.png, 000001.png ...), a pattern such as frames/%06d.png, or "
     "null (draw and discard, for timing)";
@@ -65,6 +67,7 @@ std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOption
     }
     if (ext == ".mp4" || ext == ".webm") return std::make_unique<VideoSink>(output, options);
     if (ext == ".png") return std::make_unique<PngStillSink>(output, options);
+    if (ext == ".gif") return std::make_unique<GifSink>(output, options);
     throw SinkError("cannot write '" + output + "': unknown output type" +
                     (ext.empty() ? std::string() : " '" + ext + "'") + "; " + kSupported);
 }

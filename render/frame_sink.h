@@ -2,6 +2,7 @@
 // Where rendered frames go. The output name chooses the sink:
 //   *.mp4                      H.264 (libx264, yuv420p, BT.709 limited range) in MP4
 //   *.webm                     VP9 (libvpx) in WebM (video_sink.h)
+//   *.gif                      animated GIF, one palette per video (gif_sink.h)
 //   a directory (existing, or a name ending in '/')   PNG sequence dir/000000.png, 000001.png ...
 //   a name with a printf integer pattern, e.g. frames/%06d.png or shot_%04d.png   PNG sequence
 //   *.png (no pattern)         a single still: exactly one frame

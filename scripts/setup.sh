@@ -13,6 +13,8 @@ packages=(
   libeigen3-dev libboost-math-dev
   libosmesa6-dev libglm-dev libstb-dev libpng-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  # GIF output: one palette per video (palettegen, paletteuse), render/gif_sink.h
+  libavfilter-dev
   nlohmann-json3-dev libcli11-dev
   # Mesh bodies read Wavefront OBJ files (app/scene/obj_mesh.h): a small, maintained parser instead of
   # a hand-written one; its CMake config is found with no download.
