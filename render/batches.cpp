@@ -159,6 +159,18 @@ bool Frustum::intersects_swept_sphere(glm::vec3 c, float r, glm::vec3 d) const {
     return true;
 }
 
+Frustum Frustum::cut_at(glm::vec3 eye, float distance) const {
+    // planes[4] is the near plane, row 3 + row 2 of the view-projection matrix. For a perspective
+    // projection both rows weigh only eye-space z, so its unit normal n is the camera's forward
+    // direction (in world space: the view's rotation keeps lengths). The points at most
+    // `distance` ahead of the eye, dot(n, x - eye) <= distance, are the inside of the plane
+    // (-n, dot(n, eye) + distance).
+    Frustum f = *this;
+    const glm::vec3 forward(planes[4]);
+    f.planes[5] = glm::vec4(-forward, glm::dot(forward, eye) + distance);
+    return f;
+}
+
 int segments_for(float radius_px, float max_error_px, float max_edge_px) {
     if (!(radius_px > max_error_px)) return 3;
     const float half_angle = std::acos(1.0f - max_error_px / radius_px);

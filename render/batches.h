@@ -106,6 +106,9 @@ struct Frustum {
     // region an object can throw a shadow into, for a light travelling along `direction`.
     // Conservative (plane by plane): may say yes for a sweep that passes a corner.
     bool intersects_swept_sphere(glm::vec3 centre, float radius, glm::vec3 direction) const;
+    // The same frustum with its far plane `distance` in front of `eye` (the camera's position),
+    // for a perspective camera: the part of the view within that distance.
+    Frustum cut_at(glm::vec3 eye, float distance) const;
 };
 
 // Segments around a circle of `radius_px` pixels so that the polygon departs from the circle by

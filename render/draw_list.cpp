@@ -1,6 +1,5 @@
 #include "render/draw_list.h"
 
-#include "render/camera.h"
 #include "render/renderer.h" // RenderError
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -101,14 +100,16 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
     out.casters.clear();
     const Camera& cam = view.camera;
     const Frustum frustum = Frustum::from_view_proj(s.view_proj);
-    // The part of the view that shadows are drawn in: the camera frustum cut at shadow_distance.
-    Camera near_cam = cam;
-    near_cam.z_far = std::min(cam.z_far, s.shadow_distance);
-    const float aspect = std::abs(s.view_proj[0][0]) > 0.0f
-                             ? std::abs(s.view_proj[1][1] / s.view_proj[0][0])
-                             : 1.0f; // recover width / height from the projection's scales
+    // The part of the view that shadows are drawn in: the camera's frustum cut at
+    // shadow_distance. Cut from that frustum, not rebuilt from the camera and an aspect ratio:
+    // the aspect this once recovered from the view-projection's diagonal, |vp[1][1] / vp[0][0]|,
+    // is the projection's only for a camera looking down -z. vp[0][0] = P[0][0] right.x and
+    // vp[1][1] = P[1][1] up.y carry the view's rotation: the default camera (right.x 0.89,
+    // up.y 0.17) got 0.35 instead of 16/9, a shadow region a fifth as wide as the picture, and
+    // casters towards its sides were culled as if their shadows fell outside it. Their shadows
+    // vanished (issue 14: the default scene's blue ball).
     const Frustum shadow_region =
-        Frustum::from_view_proj(projection_matrix(near_cam, aspect) * view_matrix(near_cam));
+        frustum.cut_at(cam.position, std::min(cam.z_far, s.shadow_distance));
     const glm::vec3 light_dir = glm::normalize(view.light.direction);
 
     auto place = [&](const Drawable& d) {

@@ -42,6 +42,33 @@ TEST(Culling, ShadowCastersOutsideCountWhenTheirShadowCanFallInside) {
     EXPECT_FALSE(f.intersects_swept_sphere({60, 0, 0}, 1.0f, down));  // far right: falls outside
 }
 
+// Shadows are drawn within shadow_distance of the camera: the view cut there. Cut from the view's
+// own planes, it is exactly as wide as the picture however the camera is turned (rebuilding it
+// from an aspect ratio read off the view-projection's diagonal made it a fifth as wide for the
+// default scene's camera, and the blue ball at the picture's left cast no shadow: issue 14).
+TEST(Culling, TheShadowRegionIsTheViewCutAtTheShadowDistance) {
+    Camera c; // the default scene's: turned about z and tilted down
+    c.position = {1.35f, -2.6f, 1.35f};
+    c.target = {0.0f, 0.1f, 0.75f};
+    const float aspect = 16.0f / 9.0f;
+    const Frustum view = Frustum::from_view_proj(projection_matrix(c, aspect) * view_matrix(c));
+    const Frustum cut = view.cut_at(c.position, 50.0f);
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(cut.planes[std::size_t(i)], view.planes[std::size_t(i)]);
+    const glm::vec3 forward = glm::normalize(c.target - c.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    EXPECT_TRUE(cut.intersects_sphere(c.position + 49.0f * forward, 0.5f));
+    EXPECT_FALSE(cut.intersects_sphere(c.position + 51.0f * forward, 0.5f));
+    EXPECT_TRUE(view.intersects_sphere(c.position + 51.0f * forward, 0.5f));
+    // Just inside the picture's left and right edges, 3 m ahead.
+    const float half_width = 3.0f * std::tan(glm::radians(22.5f)) * aspect;
+    for (float side : {-0.97f, 0.97f})
+        EXPECT_TRUE(
+            cut.intersects_sphere(c.position + 3.0f * forward + side * half_width * right, 0.01f))
+            << side;
+    // The blue ball at frame 0, and the light of the default scene.
+    EXPECT_TRUE(cut.intersects_swept_sphere({-0.84f, -0.37f, 1.1f}, 0.1f, {-0.5f, 0.4f, -1.0f}));
+}
+
 TEST(LevelOfDetail, SegmentsKeepTheOutlineWithinTheError) {
     for (float r : {2.0f, 10.0f, 50.0f, 300.0f}) {
         const int n = segments_for(r, 0.3f);
