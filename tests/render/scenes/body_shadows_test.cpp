@@ -16,6 +16,7 @@
 // bodies: stacks, the sphere-rain block) are drawn again in groups whose shadows lie apart,
 // alone with the ground. The light's frustum is then fitted to the group, not to the frame, but
 // whether a caster is kept does not depend on the others.
+#include "app/run/auto_camera.h"
 #include "app/run/simulation.h"
 #include "app/scene/scene.h"
 #include "app/view/view_builder.h"
@@ -68,6 +69,9 @@ struct Frame {
 Frame frame_zero(const std::string& name) {
     Frame f;
     f.scene = load_scene_argument(name);
+    // The camera the scene is drawn with (camera.auto is chosen by a pre-pass over the run).
+    frame_automatically(f.scene,
+                        make_timeline(f.scene.world.dt, f.scene.duration, f.scene.render.fps));
     const Simulation sim = make_simulation(f.scene, f.scene.world.dt);
     build_view(f.scene, sim.model, sim.state, f.view);
     f.to_light = -glm::normalize(glm::dvec3(f.view.light.direction));
