@@ -39,7 +39,7 @@ void add_render_options(CLI::App* r, RenderCommand& render) {
         ->check(CLI::Range(0, 63));
     r->add_option(
         "--preset", render.preset,
-        "encoder preset, ultrafast .. veryslow (default veryfast; ultrafast with --preview)");
+        "encoder preset, ultrafast .. veryslow (default medium; ultrafast with --preview)");
     r->add_flag("--preview", render.preview,
                 "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
 }

@@ -106,7 +106,7 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
 
 std::string video_preset(const RenderCommand& cmd) {
     if (cmd.preset) return *cmd.preset;
-    return cmd.preview ? "ultrafast" : "veryfast";
+    return cmd.preview ? "ultrafast" : "medium";
 }
 
 } // namespace tumble::app
