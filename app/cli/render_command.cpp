@@ -24,7 +24,8 @@ namespace {
 void add_render_options(CLI::App* r, RenderCommand& render) {
     add_scene_options(r, render.common);
     r->add_option("-o,--output", render.output,
-                  "out.mp4 | frames/ | frames/%06d.png | still.png (default: <scene>.mp4)");
+                  "out.mp4 | out.webm | out.gif | frames/ | frames/%06d.png | still.png (default: "
+                  "<scene>.mp4)");
     r->add_option("--width", render.width, "image width, pixels (even for MP4)");
     r->add_option("--height", render.height, "image height, pixels (even for MP4)");
     r->add_option("--fps", render.fps, "frames per second");
