@@ -74,8 +74,8 @@ TEST(ContactDeterminism, CopiedStateContinuesBitIdentically) {
 
 // The pinned result. What is promised: same source, same compiler and flags (-ffp-contract=off,
 // no fast-math), same libm, any thread count (the threads test above): same bits. Measured
-// 0x3c92483a0d847146 in the Release build (GCC 12, -O3); the asan build (-O2 -g, ASan + UBSan)
-// gave the Release build's hash for the constant before issue 13's solver change: without
+// 0x3c92483a0d847146 in the Release build (GCC 12, -O3) and the same in the asan build (-O2 -g,
+// ASan + UBSan): without
 // -ffast-math GCC neither contracts nor reorders floating-point operations at any level, so a
 // different hash between optimisation levels would point at undefined behaviour. Other compilers or
 // libms are not promised. If a deliberate change to the physics moves it, update the constant and
