@@ -7,9 +7,11 @@ extern "C" {
 #include <libavfilter/buffersrc.h>
 #include <libavformat/avformat.h>
 #include <libavutil/frame.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 }
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -186,7 +188,14 @@ void GifSink::encode() {
         if (r < 0) throw SinkError("cannot write '" + out + "': " + what + ": " + av_message(r));
     };
 
-    // 1. The palette of the whole video.
+    // 1. The palette of the whole video. palettegen reports at warning level every colour it
+    // merged ("Duped color") when a video has fewer than 256: nothing for the user to act on, so
+    // the log is held at errors while the GIF is made (the level is process-wide; restored after).
+    struct QuietPalette {
+        int level = av_log_get_level();
+        QuietPalette() { av_log_set_level(std::min(level, AV_LOG_ERROR)); }
+        ~QuietPalette() { av_log_set_level(level); }
+    } quiet;
     Pipeline first;
     add_source(first, "in0", w, h, AV_PIX_FMT_RGB24, fps, out);
     link(first, "[in0]palettegen=stats_mode=full[out]", out);
