@@ -1,4 +1,5 @@
 #include "render/gif_sink.h"
+#include "render/libav_owners.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -26,25 +27,11 @@ namespace fs = std::filesystem;
 struct GraphFree {
     void operator()(AVFilterGraph* g) const { avfilter_graph_free(&g); }
 };
-struct FrameFree {
-    void operator()(AVFrame* f) const { av_frame_free(&f); }
-};
-struct CodecFree {
-    void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
-};
-struct FormatFree {
-    void operator()(AVFormatContext* f) const {
-        if (f->pb) avio_closep(&f->pb);
-        avformat_free_context(f);
-    }
-};
 using Graph = std::unique_ptr<AVFilterGraph, GraphFree>;
-using Frame = std::unique_ptr<AVFrame, FrameFree>;
+using libav::Frame;
 
 std::string av_message(int code) {
-    char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
-    return text;
+    return libav::error_text(code);
 }
 
 // A filter graph from its description, with named sources (buffer) and one sink (buffersink).
@@ -217,7 +204,7 @@ void GifSink::encode() {
 
     const AVCodec* gif = avcodec_find_encoder(AV_CODEC_ID_GIF);
     if (!gif) throw SinkError("cannot write '" + out + "': this FFmpeg has no GIF encoder");
-    std::unique_ptr<AVCodecContext, CodecFree> codec(avcodec_alloc_context3(gif));
+    libav::Codec codec(avcodec_alloc_context3(gif));
     codec->width = w, codec->height = h, codec->pix_fmt = AV_PIX_FMT_PAL8;
     codec->time_base = AVRational{1, fps};
     codec->flags |= AV_CODEC_FLAG_BITEXACT;
@@ -225,16 +212,15 @@ void GifSink::encode() {
     const std::string url = "file:" + file_.temp_path().string();
     AVFormatContext* fmt = nullptr;
     check(avformat_alloc_output_context2(&fmt, nullptr, "gif", url.c_str()), "GIF muxer");
-    std::unique_ptr<AVFormatContext, FormatFree> format(fmt);
+    libav::Format format(fmt);
     AVStream* stream = avformat_new_stream(fmt, nullptr);
     if (!stream) throw SinkError("cannot write '" + out + "': out of memory");
     check(avcodec_parameters_from_context(stream->codecpar, codec.get()), "stream parameters");
     stream->time_base = codec->time_base;
     check(avio_open(&fmt->pb, url.c_str(), AVIO_FLAG_WRITE), "creating the file");
     check(avformat_write_header(fmt, nullptr), "writing the GIF header");
-    AVPacket* packet = av_packet_alloc();
-    std::unique_ptr<AVPacket, void (*)(AVPacket*)> packet_owner(
-        packet, [](AVPacket* p) { av_packet_free(&p); });
+    libav::Packet packet_owner(av_packet_alloc());
+    AVPacket* packet = packet_owner.get();
     auto drain = [&] {
         while (avcodec_receive_packet(codec.get(), packet) == 0) {
             av_packet_rescale_ts(packet, codec->time_base, stream->time_base);

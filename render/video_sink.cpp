@@ -1,4 +1,5 @@
 #include "render/video_sink.h"
+#include "render/libav_owners.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -18,27 +19,14 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string av_error_text(int code) {
-    char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
-    return text;
+    return libav::error_text(code);
 }
 
-// Owning pointers for the libav objects, each freed by its own function.
-struct FormatFree {
-    void operator()(AVFormatContext* f) const {
-        if (f->pb) avio_closep(&f->pb);
-        avformat_free_context(f);
-    }
-};
-struct CodecFree {
-    void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
-};
-struct FrameFree {
-    void operator()(AVFrame* f) const { av_frame_free(&f); }
-};
-struct PacketFree {
-    void operator()(AVPacket* p) const { av_packet_free(&p); }
-};
+// Owning pointers for the libav objects (render/libav_owners.h), and swscale's.
+using libav::CodecFree;
+using libav::FormatFree;
+using libav::FrameFree;
+using libav::PacketFree;
 struct ScalerFree {
     void operator()(SwsContext* s) const { sws_freeContext(s); }
 };
