@@ -1,5 +1,6 @@
 #include "render/batches.h"
 
+#include "render/ambient_occlusion.h"
 #include "render/color.h"
 
 #include <GL/glext.h>
@@ -20,11 +21,16 @@ float shininess_from_roughness(float roughness) {
 
 InstanceData make_instance_data(const glm::mat4& model, glm::vec3 color, const Material& material,
                                 bool checker) {
-    return {model, glm::inverseTranspose(glm::mat3(model)),
-            glm::vec4(srgb_to_linear(color), checker ? 1.0f : 0.0f),
-            glm::vec4(shininess_from_roughness(material.roughness),
-                      std::clamp(material.specular, 0.0f, 1.0f),
-                      std::clamp(material.metallic, 0.0f, 1.0f), 0.0f)};
+    InstanceData d{model,
+                   glm::vec4(srgb_to_linear(color), checker ? 1.0f : 0.0f),
+                   glm::vec4(shininess_from_roughness(material.roughness),
+                             std::clamp(material.specular, 0.0f, 1.0f),
+                             std::clamp(material.metallic, 0.0f, 1.0f),
+                             1.0f - std::clamp(material.roughness, 0.0f, 1.0f)),
+                   {}};
+    const PackedOccluder none = no_occluder();
+    for (std::size_t k = 0; k < 6; ++k) d.occluders[k] = none[k % 3];
+    return d;
 }
 
 // --- BatchList -------------------------------------------------------------------------------
@@ -64,8 +70,8 @@ void BatchList::finish() {
     data_.clear();
     for (std::size_t i : order_) {
         Group& g = groups_[i];
-        batches_.push_back(
-            {g.mesh, g.cull_back, std::uint32_t(data_.size()), std::uint32_t(g.items.size())});
+        batches_.push_back({g.mesh, g.cull_back, std::uint32_t(data_.size()),
+                            std::uint32_t(g.items.size()), g.rank});
         g.order.resize(g.items.size());
         std::iota(g.order.begin(), g.order.end(), 0u);
         std::stable_sort(g.order.begin(), g.order.end(), [&g](std::uint32_t a, std::uint32_t b) {
@@ -102,7 +108,7 @@ void InstanceBuffer::upload(const BatchList& list) {
 
 namespace {
 
-// Points attributes 2..10 of the bound vertex array at the instances from `first` on.
+// Points attributes 2..13 of the bound vertex array at the instances from `first` on.
 void point_instance_attributes(std::size_t first) {
     const auto stride = GLsizei(sizeof(InstanceData));
     const std::size_t base = first * sizeof(InstanceData);
@@ -114,18 +120,21 @@ void point_instance_attributes(std::size_t first) {
     };
     for (GLuint c = 0; c < 4; ++c)
         attribute(2 + c, 4, offsetof(InstanceData, model) + c * sizeof(glm::vec4));
-    for (GLuint c = 0; c < 3; ++c)
-        attribute(6 + c, 3, offsetof(InstanceData, normal_matrix) + c * sizeof(glm::vec3));
-    attribute(9, 4, offsetof(InstanceData, color));
-    attribute(10, 4, offsetof(InstanceData, material));
+    attribute(6, 4, offsetof(InstanceData, color));
+    attribute(7, 4, offsetof(InstanceData, material));
+    for (GLuint k = 0; k < 6; ++k)
+        attribute(8 + k, 4, offsetof(InstanceData, occluders) + k * sizeof(glm::vec4));
 }
 
 } // namespace
 
-void InstanceBuffer::draw(const BatchList& list, GLenum cull_face) const {
+void InstanceBuffer::draw(const BatchList& list, GLenum cull_face, Select select, int rank) const {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glCullFace(cull_face);
     for (const Batch& b : list.batches()) {
+        if ((select == Select::Rank && b.rank != rank) ||
+            (select == Select::ExceptRank && b.rank == rank))
+            continue;
         if (b.cull_back)
             glEnable(GL_CULL_FACE);
         else

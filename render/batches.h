@@ -20,17 +20,17 @@
 
 namespace tumble::render {
 
-// One instance as the shaders read it: vertex attributes 2..10 with divisor 1 (lit.vert).
+// One instance as the shaders read it: vertex attributes 2..13 with divisor 1 (lit.vert).
 struct InstanceData {
-    glm::mat4 model;         // unit mesh -> world (locations 2-5)
-    glm::mat3 normal_matrix; // inverse-transpose of model's 3x3 (locations 6-8)
-    glm::vec4 color;         // linear base colour; a = 1 on the checkered ground (location 9)
-    glm::vec4 material;      // Blinn-Phong shininess, specular, metallic, 0 (location 10)
+    glm::mat4 model;    // unit mesh -> world (locations 2-5)
+    glm::vec4 color;    // linear base colour; a = 1 on the checkered ground (location 6)
+    glm::vec4 material; // Blinn-Phong shininess, specular, metallic, gloss (location 7)
+    // The two occluders that darken this instance's sky most, three rows each
+    // (ambient_occlusion.h); no_occluder() where there are fewer (locations 8-13).
+    std::array<glm::vec4, 6> occluders;
 };
 
-// The shader inputs of an instance, `color` given in sRGB. Normals transform by the
-// inverse-transpose: a box squashed in z must get normals stretched in z to stay perpendicular
-// to its faces.
+// The shader inputs of an instance, `color` given in sRGB, with no occluders.
 InstanceData make_instance_data(const glm::mat4& model, glm::vec3 color, const Material& material,
                                 bool checker);
 
@@ -43,7 +43,12 @@ struct Batch {
     bool cull_back = true;   // closed meshes hide their back faces; planes and OBJ meshes do not
     std::uint32_t first = 0; // index of the first instance in BatchList::data()
     std::uint32_t count = 0;
+    int rank = 0; // BatchList::add's: the ground's batches have kGroundRank
 };
+
+// The rank of ground planes' batches (draw_list.cpp): drawn last, and on their own when the
+// renderer blends a floor reflection under them.
+constexpr int kGroundRank = 1;
 
 // Instances grouped by (mesh, culling), in the order of `rank` (lower first), then of first use;
 // within a group, nearest first by `distance` (front to back: the depth test then rejects the
@@ -85,9 +90,12 @@ class InstanceBuffer {
     InstanceBuffer& operator=(const InstanceBuffer&) = delete;
 
     void upload(const BatchList& list);
-    // Draws every batch of the uploaded list. Batches with cull_back cull the face named by
-    // `cull_face` (GL_BACK for the camera, GL_FRONT for the shadow map), the others cull none.
-    void draw(const BatchList& list, GLenum cull_face) const;
+    // Draws the batches of the uploaded list, every one or only those whose rank is (or, with
+    // `except`, is not) `rank`. Batches with cull_back cull the face named by `cull_face`
+    // (GL_BACK for the camera, GL_FRONT for the shadow map), the others cull none.
+    enum class Select { All, Rank, ExceptRank };
+    void draw(const BatchList& list, GLenum cull_face, Select select = Select::All,
+              int rank = 0) const;
 
   private:
     GLuint vbo_ = 0;

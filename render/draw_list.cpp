@@ -14,7 +14,7 @@ namespace {
 // Batches are drawn in rank order: solid bodies first, the ground last, so that the ground's
 // hidden pixels fail the depth test before they are shaded.
 int rank_of(MeshKind kind) {
-    return kind == MeshKind::Plane ? 1 : 0;
+    return kind == MeshKind::Plane ? kGroundRank : 0;
 }
 
 // The body-axis rods of an instance: unit cylinders stretched from the body's centre to past its
@@ -81,7 +81,33 @@ struct Drawable {
     glm::mat4 transform;
     glm::vec3 color;
     Material material;
+    const std::array<std::int32_t, 2>* occluders = nullptr; // into DrawLists::occluders
 };
+
+// Occluders and receivers of ambient occlusion: every body shape that is not a plane. Then each
+// receiver's two nearest occluders, and the ground decals under every occluder near a plane.
+void find_occluders(const SceneView& view, const std::vector<const GpuMesh*>& custom,
+                    const MeshLibrary& lib, DrawLists& out) {
+    out.occluders.clear();
+    out.receivers.clear();
+    out.receiver_of.assign(view.instances.size(), -1);
+    for (std::size_t i = 0; i < view.instances.size(); ++i) {
+        const Instance& in = view.instances[i];
+        if (in.body < 0 || in.mesh == MeshKind::Plane) continue;
+        const GpuMesh* unit =
+            in.mesh == MeshKind::Custom ? custom[in.mesh_id] : &mesh_at_detail(lib, in.mesh, 0, 1);
+        Occluder o = occluder_of(in.mesh, in.transform, unit->half_extent());
+        o.body = in.body;
+        out.receiver_of[i] = std::int32_t(out.receivers.size());
+        out.receivers.push_back({o.centre, unit->radius() * max_scale(in.transform), in.body});
+        out.occluders.push_back(o);
+    }
+    nearest_occluders(out.occluders, out.receivers, out.nearest);
+    out.all_decals.clear();
+    for (const Instance& in : view.instances)
+        if (in.mesh == MeshKind::Plane)
+            add_ground_decals(in.transform, out.occluders, out.all_decals);
+}
 
 } // namespace
 
@@ -119,7 +145,15 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
         const float bound = unit->radius() * max_scale(d.transform);
         const bool checker = d.kind == MeshKind::Plane;
         const bool closed = d.kind != MeshKind::Plane && d.kind != MeshKind::Custom;
-        const InstanceData data = make_instance_data(d.transform, d.color, d.material, checker);
+        InstanceData data = make_instance_data(d.transform, d.color, d.material, checker);
+        if (d.occluders) {
+            for (std::size_t k = 0; k < 2; ++k) {
+                const std::int32_t o = (*d.occluders)[k];
+                if (o < 0) continue;
+                const PackedOccluder rows = pack(out.occluders[std::size_t(o)]);
+                for (std::size_t r = 0; r < 3; ++r) data.occluders[3 * k + r] = rows[r];
+            }
+        }
         const float radius = lod_radius(d.kind, d.transform);
         if (frustum.intersects_sphere(centre, bound)) {
             const float distance = glm::length(centre - cam.position);
@@ -136,20 +170,30 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
         }
     };
 
-    for (const Instance& inst : view.instances) {
-        const GpuMesh* mesh = nullptr;
-        if (inst.mesh == MeshKind::Custom) {
-            if (inst.mesh_id >= custom.size())
-                throw RenderError("instance uses custom mesh " + std::to_string(inst.mesh_id) +
-                                  " but the view has " + std::to_string(custom.size()));
-            mesh = custom[inst.mesh_id];
+    for (const Instance& inst : view.instances)
+        if (inst.mesh == MeshKind::Custom && inst.mesh_id >= custom.size())
+            throw RenderError("instance uses custom mesh " + std::to_string(inst.mesh_id) +
+                              " but the view has " + std::to_string(custom.size()));
+    out.decals.clear();
+    if (s.ambient_occlusion) {
+        find_occluders(view, custom, lib, out);
+        for (const Decal& d : out.all_decals) {
+            const float half = glm::length(glm::vec3(d.model[0]));
+            if (frustum.intersects_sphere(glm::vec3(d.model[3]), 1.5f * half))
+                out.decals.push_back(d);
         }
-        place({inst.mesh, mesh, inst.transform, inst.color, inst.material});
+    }
+    for (std::size_t i = 0; i < view.instances.size(); ++i) {
+        const Instance& inst = view.instances[i];
+        const GpuMesh* mesh = inst.mesh == MeshKind::Custom ? custom[inst.mesh_id] : nullptr;
+        const std::int32_t receiver = s.ambient_occlusion ? out.receiver_of[i] : -1;
+        place({inst.mesh, mesh, inst.transform, inst.color, inst.material,
+               receiver >= 0 ? &out.nearest[std::size_t(receiver)] : nullptr});
         if (inst.axes) {
             const glm::vec3 half = mesh ? mesh->half_extent() : glm::vec3(1.0f);
             for (const Rod& rod : axis_rods(inst.transform, half))
-                place(
-                    {MeshKind::Cylinder, nullptr, rod.transform, rod.color, Material{0.4f, 0.4f}});
+                place({MeshKind::Cylinder, nullptr, rod.transform, rod.color, Material{0.4f, 0.4f},
+                       nullptr});
         }
     }
     out.camera.finish();

@@ -8,6 +8,9 @@
 //     map). A 64-segment sphere is 4032 triangles; one 20 pixels across needs 24 segments (528).
 //   - Order: nearest first within each batch (BatchList), the ground last.
 //   - Body axes: an instance with `axes` adds three thin cylinders (x red, y green, z blue).
+//   - Ambient occlusion: each body's two nearest occluders go into its instance data, and each
+//     body near a plane gets a ground decal (ambient_occlusion.h).
+#include "render/ambient_occlusion.h"
 #include "render/batches.h"
 #include "render/mesh.h"
 #include "render/scene_view.h"
@@ -35,6 +38,7 @@ struct DrawSettings {
     bool shadows = true;
     int shadow_map_size = 1024;    // at most
     float shadow_distance = 50.0f; // casters farther from the camera than this cast no shadow
+    bool ambient_occlusion = true;
 };
 
 // A shadow caster waiting for the light's frustum, which depends on all of them.
@@ -53,6 +57,13 @@ struct DrawLists {
     // Scratch, kept between frames so that building allocates nothing once warmed up.
     std::vector<glm::vec4> caster_bounds; // xyz centre, w radius
     std::vector<PendingCaster> casters;
+    // Ambient occlusion: the ground decals the camera sees, and the scratch that finds them.
+    std::vector<Decal> decals;
+    std::vector<Occluder> occluders;
+    std::vector<Receiver> receivers;
+    std::vector<std::int32_t> receiver_of; // per view instance: index into receivers, or -1
+    std::vector<std::array<std::int32_t, 2>> nearest;
+    std::vector<Decal> all_decals;
 };
 
 // Half a pixel of outline error is below what the eye picks out, with or without MSAA (compared

@@ -3,12 +3,15 @@
 //   1. draw lists  cull, choose levels of detail, group instances into batches (draw_list.h)
 //   2. shadow map  the casters' depth seen from the key light (shadow_map.h, shadow.vert/.frag)
 //   3. clear       colour and depth of the (multisampled) target: no frame depends on the last
-//   4. scene       every batch, one instanced draw call each, lit (lit.vert / lit.frag)
-//   5. sky         one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
+//   4. reflection  (optional) the bodies mirrored in the ground plane, dimmed by the floor's
+//                  reflectance; the ground is then added over them (reflections)
+//   5. scene       every batch, one instanced draw call each, lit (lit.vert / lit.frag)
+//   6. occlusion   the ground decals of ambient occlusion (occlusion_decals.h)
+//   7. sky         one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
 //                  after the scene so the depth test skips every pixel an object already covers
-//   6. resolve     average each pixel's MSAA samples into the single-sample target
-//   7. overlay     text in a corner (text_overlay.h), after the resolve: it needs no MSAA
-//   8. read back   glReadPixels into the caller's Image, flipped to top-down rows
+//   8. resolve     average each pixel's MSAA samples into the single-sample target
+//   9. overlay     text in a corner (text_overlay.h), after the resolve: it needs no MSAA
+//  10. read back   glReadPixels into the caller's Image, flipped to top-down rows
 // Everything lives in Renderer::Impl: no globals.
 #include "render/renderer.h"
 
@@ -19,6 +22,7 @@
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
 #include "render/mesh.h"
+#include "render/occlusion_decals.h"
 #include "render/shader.h"
 #include "render/shadow_map.h"
 #include "render/text_overlay.h"
@@ -38,7 +42,8 @@ namespace {
 // Uniform locations of lit.vert + lit.frag, looked up once.
 struct LitUniforms {
     GLint view_proj, camera_pos, light_dir, light_color, ambient, horizon, zenith;
-    GLint shadow_matrix, normal_offset, shadow_map, shadow_texel;
+    GLint shadow_matrix, normal_offset, shadow_map, shadow_texel, shadow_depth, penumbra_scale;
+    GLint clip_plane, mirror;
 
     explicit LitUniforms(const ShaderProgram& p)
         : view_proj(p.uniform("u_view_proj")), camera_pos(p.uniform("u_camera_pos")),
@@ -46,7 +51,9 @@ struct LitUniforms {
           ambient(p.uniform("u_ambient")), horizon(p.uniform("u_horizon")),
           zenith(p.uniform("u_zenith")), shadow_matrix(p.uniform("u_shadow_matrix")),
           normal_offset(p.uniform("u_normal_offset")), shadow_map(p.uniform("u_shadow_map")),
-          shadow_texel(p.uniform("u_shadow_texel")) {}
+          shadow_texel(p.uniform("u_shadow_texel")), shadow_depth(p.uniform("u_shadow_depth")),
+          penumbra_scale(p.uniform("u_penumbra_scale")), clip_plane(p.uniform("u_clip_plane")),
+          mirror(p.uniform("u_mirror")) {}
 };
 
 struct SkyUniforms {
@@ -129,8 +136,34 @@ class CustomMeshCache {
     std::vector<const GpuMesh*> resolved_;
 };
 
-const char* lit_defines(bool shadows) {
-    return shadows ? "#define SHADOWS\n" : "";
+std::string lit_defines(const RenderOptions& o) {
+    std::string d;
+    if (o.shadows) d += "#define SHADOWS\n";
+    if (o.shadows && o.soft_shadows)
+        d += "#extension GL_ARB_texture_gather : require\n#define SOFT_SHADOWS\n";
+    if (o.ambient_occlusion) d += "#define AMBIENT_OCCLUSION\n";
+    return d;
+}
+
+// The ground plane that reflections mirror in: the first plane of the view, as a point on it
+// and its unit normal. None: no reflection.
+std::optional<std::pair<glm::vec3, glm::vec3>> mirror_plane(const SceneView& view) {
+    for (const Instance& in : view.instances) {
+        if (in.mesh != MeshKind::Plane) continue;
+        const glm::vec3 n = glm::cross(glm::vec3(in.transform[0]), glm::vec3(in.transform[1]));
+        if (glm::length(n) == 0.0f) continue;
+        return std::pair{glm::vec3(in.transform[3]), glm::normalize(n)};
+    }
+    return std::nullopt;
+}
+
+// Reflection in the plane through `p` with unit normal `n`: x -> x - 2 ((x - p) . n) n.
+glm::mat4 mirror_matrix(glm::vec3 p, glm::vec3 n) {
+    glm::mat4 m(1.0f);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) m[c][r] -= 2.0f * n[c] * n[r];
+    m[3] = glm::vec4(2.0f * glm::dot(p, n) * n, 1.0f);
+    return m;
 }
 
 } // namespace
@@ -149,6 +182,8 @@ struct Renderer::Impl {
     CustomMeshCache custom_meshes;
     InstanceBuffer camera_instances, shadow_instances;
     std::optional<ShadowMap> shadow_map;
+    GLuint depth_sampler = 0; // reads the shadow map's raw depths (soft shadows)
+    std::optional<OcclusionDecals> decals;
     std::unique_ptr<TextOverlay> overlay; // made on first use
     DrawLists lists;
     FrameStats stats;
@@ -156,7 +191,7 @@ struct Renderer::Impl {
 
     explicit Impl(const RenderOptions& o)
         : options(checked(o)), target(options.width, options.height),
-          lit(shader_asset("lit.vert"), shader_asset("lit.frag"), lit_defines(options.shadows)),
+          lit(shader_asset("lit.vert"), shader_asset("lit.frag"), lit_defines(options)),
           sky(shader_asset("sky.vert"), shader_asset("sky.frag")), lit_uniforms(lit),
           sky_uniforms(sky) {
         if (options.samples > 1) msaa.emplace(options.width, options.height, options.samples);
@@ -164,7 +199,20 @@ struct Renderer::Impl {
             shadow_program.emplace(shader_asset("shadow.vert"), shader_asset("shadow.frag"));
             shadow_light_view_proj = shadow_program->uniform("u_light_view_proj");
             shadow_map.emplace(options.shadow_map_size);
+            if (options.soft_shadows) {
+                // The same texture through a sampler that does not compare: nearest texels,
+                // for textureGather's blocker search.
+                glGenSamplers(1, &depth_sampler);
+                glSamplerParameteri(depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+                glSamplerParameteri(depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+                glSamplerParameteri(depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+                glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+                glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+                const float border[] = {1.0f, 1.0f, 1.0f, 1.0f};
+                glSamplerParameterfv(depth_sampler, GL_TEXTURE_BORDER_COLOR, border);
+            }
         }
+        if (options.ambient_occlusion) decals.emplace();
         glGenVertexArrays(1, &empty_vao);
         check_gl("while setting up the renderer");
     }
@@ -173,9 +221,12 @@ struct Renderer::Impl {
     ~Impl() {
         context.make_current();
         glDeleteVertexArrays(1, &empty_vao);
+        if (depth_sampler) glDeleteSamplers(1, &depth_sampler);
     }
 
     void shadow_pass();
+    void set_lit_uniforms(const SceneView& view, const FrameMatrices& m);
+    void reflection_pass(const SceneView& view, const FrameMatrices& m);
     void scene_pass(const SceneView& view, const FrameMatrices& m);
     void sky_pass(const SceneView& view, const FrameMatrices& m);
 };
@@ -196,9 +247,7 @@ void Renderer::Impl::shadow_pass() {
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+void Renderer::Impl::set_lit_uniforms(const SceneView& view, const FrameMatrices& m) {
     glUseProgram(lit.id());
     // Per-frame uniforms: the camera and the light are the same for every instance.
     const LitUniforms& u = lit_uniforms;
@@ -212,6 +261,8 @@ void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
     const SkyColours sky = sky_colours(view.background);
     glUniform3fv(u.horizon, 1, glm::value_ptr(sky.horizon));
     glUniform3fv(u.zenith, 1, glm::value_ptr(sky.zenith));
+    glUniform1f(u.mirror, 0.0f);
+    glUniform4f(u.clip_plane, 0.0f, 0.0f, 0.0f, 1.0f);
     if (options.shadows) {
         const LightFrame& light = lists.light;
         // With no casters the identity puts every point at depth <= 1: all lit.
@@ -221,9 +272,69 @@ void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
         glUniform1f(u.shadow_texel, 1.0f / float(options.shadow_map_size));
         glUniform1i(u.shadow_map, 1);
         shadow_map->bind_texture(GL_TEXTURE1);
+        if (options.soft_shadows) {
+            // Penumbra width in texels per unit of map depth: 2 tan(angle / 2) x depth range in
+            // metres / texel size in metres (lit.frag, light_visibility).
+            const float half_angle = 0.5f * glm::radians(std::max(view.light.angle_deg, 0.0f));
+            const float scale =
+                light.empty ? 0.0f
+                            : 2.0f * std::tan(half_angle) * light.depth_range / light.texel_size;
+            glUniform1f(u.penumbra_scale, scale);
+            glUniform1i(u.shadow_depth, 2);
+            shadow_map->bind_texture(GL_TEXTURE2);
+            glBindSampler(2, depth_sampler);
+        }
     }
+}
+
+void Renderer::Impl::reflection_pass(const SceneView& view, const FrameMatrices& m) {
+    const auto plane = mirror_plane(view);
+    if (!plane) return;
+    const auto [p, n] = *plane;
+    const glm::mat4 mirror = mirror_matrix(p, n);
+    // The mirrored world seen by the camera is the world seen by the mirrored camera: the
+    // bodies keep their own positions, normals and shading; only where they land on the screen
+    // (and the eye their highlights are seen from) moves. Mirroring turns clockwise winding
+    // into counter-clockwise, so front faces are the clockwise ones for this pass. Whatever of
+    // a body reaches below the plane is clipped away: it would show above the floor.
+    const LitUniforms& u = lit_uniforms;
+    const glm::mat4 vp = m.view_proj * mirror;
+    glUniformMatrix4fv(u.view_proj, 1, GL_FALSE, glm::value_ptr(vp));
+    const glm::vec3 eye = glm::vec3(mirror * glm::vec4(view.camera.position, 1.0f));
+    glUniform3fv(u.camera_pos, 1, glm::value_ptr(eye));
+    glUniform4f(u.clip_plane, n.x, n.y, n.z, -glm::dot(n, p));
+    glUniform1f(u.mirror, 1.0f);
+    glEnable(GL_CLIP_DISTANCE0);
+    glFrontFace(GL_CW);
+    camera_instances.draw(lists.camera, GL_BACK, InstanceBuffer::Select::ExceptRank, kGroundRank);
+    glFrontFace(GL_CCW);
+    glDisable(GL_CLIP_DISTANCE0);
+    glUniformMatrix4fv(u.view_proj, 1, GL_FALSE, glm::value_ptr(m.view_proj));
+    glUniform3fv(u.camera_pos, 1, glm::value_ptr(view.camera.position));
+    glUniform4f(u.clip_plane, 0.0f, 0.0f, 0.0f, 1.0f);
+    glUniform1f(u.mirror, 0.0f);
+}
+
+void Renderer::Impl::scene_pass(const SceneView& view, const FrameMatrices& m) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    set_lit_uniforms(view, m);
     camera_instances.upload(lists.camera);
-    camera_instances.draw(lists.camera, GL_BACK);
+    if (!options.reflections) {
+        camera_instances.draw(lists.camera, GL_BACK);
+    } else {
+        reflection_pass(view, m);
+        // The bodies, then the ground over the reflections: where a reflection left R in alpha
+        // the floor keeps 1 - R of its colour and the reflection (premultiplied) adds the rest;
+        // elsewhere alpha is the clear's 0 and the floor is drawn as it is.
+        camera_instances.draw(lists.camera, GL_BACK, InstanceBuffer::Select::ExceptRank,
+                              kGroundRank);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+        camera_instances.draw(lists.camera, GL_BACK, InstanceBuffer::Select::Rank, kGroundRank);
+        glDisable(GL_BLEND);
+    }
+    if (decals) decals->draw(lists.decals, library.plane, m.view_proj, view.camera.position);
 }
 
 void Renderer::Impl::sky_pass(const SceneView& view, const FrameMatrices& m) {
@@ -258,12 +369,19 @@ void Renderer::draw(const SceneView& view, Image& out) {
     settings.height = o.height;
     settings.shadows = o.shadows;
     settings.shadow_map_size = o.shadow_map_size;
+    settings.ambient_occlusion = o.ambient_occlusion;
     build_draw_lists(view, settings, r.library, r.custom_meshes.resolve(view), r.lists);
     if (o.shadows) r.shadow_pass();
 
     const Framebuffer& main = r.msaa ? *r.msaa : r.target;
     main.bind();
-    glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
+    // The sky pass paints every pixel nothing else covers, so the clear colour never shows. With
+    // reflections it is (0, 0, 0, 0): alpha 0 tells the ground where no reflection was drawn,
+    // and black adds nothing there.
+    if (o.reflections)
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    else
+        glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE); // glClear respects the depth write mask
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

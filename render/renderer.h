@@ -21,8 +21,11 @@ struct RenderOptions {
     // Multisample anti-aliasing: coverage and depth samples per pixel (1 = none). Clamped to the
     // context's GL_MAX_SAMPLES (4 on llvmpipe); options() reports the count in use.
     int samples = 4;
-    bool shadows = true;        // shadow map from the key light
-    int shadow_map_size = 1024; // texels per side at most (a small scene uses a smaller corner)
+    bool shadows = true;           // shadow map from the key light
+    bool soft_shadows = true;      // edges that harden towards the contact (shadows only)
+    bool ambient_occlusion = true; // bodies darken the ground and each other where they meet
+    bool reflections = false;      // the bodies mirrored in the ground plane
+    int shadow_map_size = 1024;    // texels per side at most (a small scene uses a smaller corner)
 };
 
 // What the last draw() did, for --stats and benchmarks.

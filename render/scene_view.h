@@ -26,6 +26,10 @@ struct Light {
                         -1.0f};        // direction the light travels (world), need not be unit
     glm::vec3 color{1.0f, 1.0f, 1.0f}; // linear RGB intensity of the key light
     float ambient = 0.25f;             // ambient term, fraction of the base colour
+    // Angular diameter of the light seen from the scene, degrees: how fast shadows soften with
+    // the distance from caster to receiver (soft shadows only). The sun's is 0.53; a slightly
+    // overcast sun or a big softbox is a few degrees.
+    float angle_deg = 2.5f;
 };
 
 enum class MeshKind : std::uint8_t { Sphere, Box, Plane, Cylinder, Custom };
@@ -61,6 +65,10 @@ struct Instance {
     MeshId mesh_id = 0;                // MeshKind::Custom only
     Material material{};
     bool axes = false;
+    // The body this shape belongs to (a capsule is three shapes of one body), for ambient
+    // occlusion: a body darkens the ground and other bodies, never itself. -1: not a body (an
+    // arrow or a marker), which neither casts nor receives it.
+    std::int32_t body = -1;
 };
 
 struct SceneView {

@@ -52,6 +52,7 @@ LightFrame fit_light_frame(glm::vec3 direction, std::span<const glm::vec4> caste
                                       centre.y + half, z_near, z_far);
     out.view_proj = proj * view;
     out.texel_size = texel;
+    out.depth_range = z_far - z_near;
     out.map_size = map_size;
     out.empty = false;
     return out;

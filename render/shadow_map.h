@@ -29,6 +29,7 @@ namespace tumble::render {
 struct LightFrame {
     glm::mat4 view_proj{1.0f}; // world -> light clip space (x, y, z in [-1, 1] inside)
     float texel_size = 0.0f;   // one shadow-map texel, metres
+    float depth_range = 0.0f;  // metres along the light from map depth 0 to depth 1
     int map_size = 0;          // texels per side actually used (a corner of the texture)
     bool empty = true;         // no casters: nothing to draw, nothing in shadow
 };

@@ -38,21 +38,32 @@ struct BenchRenderCommand {
 struct BenchCase {
     const char* name;
     const char* scene; // built-in scene name, or "spheres1000" (generated below)
-    const char* sink;  // "mp4" or "png"
+    const char* sink;  // "mp4", "png" or "gif"
     bool preview;
     bool shadows, antialiasing;
     int width, height;
     int frames, quick_frames;
+    // The effects of issue 14, each on or off (the scene's defaults: soft shadows and AO on).
+    bool soft_shadows = true, ambient_occlusion = true, reflections = false;
 };
 
 // The targets of issue 5: the default demo at 720p with shadows and anti-aliasing (10 s at
 // 60 fps), the same into PNG frames, a 1000-sphere scene with shadows, and the preview mode.
+// Then the cost of each effect of issue 14 on the default demo, against `default-720p-hard`
+// (hard shadows, no ambient occlusion: the picture before them), and GIF output.
 constexpr BenchCase kCases[] = {
     {"default-720p-mp4", "default", "mp4", false, true, true, 1280, 720, 600, 120},
     {"default-720p-png", "default", "png", false, true, true, 1280, 720, 240, 60},
     {"spheres1000-720p", "spheres1000", "mp4", false, true, true, 1280, 720, 120, 30},
     {"spheres1000-720p-noaa", "spheres1000", "mp4", false, true, false, 1280, 720, 120, 30},
     {"default-preview", "default", "mp4", true, false, false, 640, 360, 600, 120},
+    {"default-720p-hard", "default", "mp4", false, true, true, 1280, 720, 240, 60, false, false},
+    {"default-720p-soft", "default", "mp4", false, true, true, 1280, 720, 240, 60, true, false},
+    {"default-720p-ao", "default", "mp4", false, true, true, 1280, 720, 240, 60, false, true},
+    {"default-720p-mirror", "default", "mp4", false, true, true, 1280, 720, 240, 60, true, true,
+     true},
+    {"default-480p-gif", "default", "gif", false, true, true, 854, 480, 240, 60},
+    {"default-480p-mp4", "default", "mp4", false, true, true, 854, 480, 240, 60},
 };
 
 // 1000 spheres in a 10 x 10 x 10 lattice above a ground, floating (gravity_scale 0) and each
@@ -95,6 +106,9 @@ PipelineStats run_once(const BenchCase& c, int frames, const std::string& output
     cmd.height = c.height;
     cmd.shadows = c.shadows;
     cmd.antialiasing = c.antialiasing;
+    cmd.soft_shadows = c.soft_shadows;
+    cmd.ambient_occlusion = c.ambient_occlusion;
+    cmd.reflections = c.reflections;
     apply_render_overrides(cmd, scene);
     scene.duration = double(frames) / scene.render.fps;
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
@@ -131,8 +145,10 @@ std::string options_label(const BenchCase& c) {
         if (!s.empty()) s += '+';
         s += word;
     };
-    if (c.shadows) add("shadows");
+    if (c.shadows) add(c.soft_shadows ? "soft-shadows" : "shadows");
     if (c.antialiasing) add("msaa4");
+    if (c.ambient_occlusion && !c.preview) add("ao");
+    if (c.reflections) add("mirror");
     return s.empty() ? "plain" : s;
 }
 
@@ -207,7 +223,7 @@ Row measure(const BenchCase& c, const BenchRenderCommand& cmd, const ScratchDir&
         std::filesystem::create_directories(scratch.path);
         const std::string out = std::string(c.sink) == "png"
                                     ? (scratch.path / "frames/").string()
-                                    : (scratch.path / "bench.mp4").string();
+                                    : (scratch.path / (std::string("bench.") + c.sink)).string();
         const PipelineStats real = run_once(c, frames, out);
         const PipelineStats null = run_once(c, frames, "null");
         physics.push_back(real.physics.rate());
@@ -235,15 +251,15 @@ Row measure(const BenchCase& c, const BenchRenderCommand& cmd, const ScratchDir&
 }
 
 void print_table(const std::vector<Row>& rows, int repeats, double load) {
-    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "case",
+    std::printf("%-22s %-9s %-25s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "case",
                 "size", "options", "sink", "frames", "physics", "render", "output", "end-to-end",
                 "null e2e", "ratio", "cpu", "null");
-    std::printf("%-22s %-9s %-15s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "", "", "",
+    std::printf("%-22s %-9s %-25s %-4s %6s | %9s %8s %8s | %10s | %9s %6s | %7s %7s\n", "", "", "",
                 "", "", "fps", "fps", "fps", "fps", "fps", "", "ms/fr", "ms/fr");
     for (const Row& r : rows) {
         char size[32];
         std::snprintf(size, sizeof size, "%dx%d", r.c->width, r.c->height);
-        std::printf("%-22s %-9s %-15s %-4s %6d | %9.1f %8.1f %8.1f | %10.1f | %9.1f %6.2f | %7.1f "
+        std::printf("%-22s %-9s %-25s %-4s %6d | %9.1f %8.1f %8.1f | %10.1f | %9.1f %6.2f | %7.1f "
                     "%7.1f\n",
                     r.c->name, size, options_label(*r.c).c_str(), r.c->sink, r.frames, r.physics,
                     r.render, r.output, r.e2e, r.null_e2e, r.ratio(), r.cpu_ms, r.null_cpu_ms);

@@ -38,11 +38,13 @@ struct GoldensCommand {
     std::vector<std::string> scenes; // only the entries of these scenes (empty: all)
 };
 
-// One renderer per set of options (size, samples, shadows), created on first use.
+// One renderer per set of options (size, samples, picture switches), created on first use.
 class RendererCache {
   public:
     render::Renderer& get(const render::RenderOptions& o) {
-        auto& r = cache_[{o.width, o.height, o.samples, o.shadows ? 1 : 0}];
+        const int switches = (o.shadows ? 1 : 0) | (o.soft_shadows ? 2 : 0) |
+                             (o.ambient_occlusion ? 4 : 0) | (o.reflections ? 8 : 0);
+        auto& r = cache_[{o.width, o.height, o.samples, switches}];
         if (!r) r = std::make_unique<render::Renderer>(o);
         return *r;
     }

@@ -41,8 +41,10 @@ void add_render_options(CLI::App* r, RenderCommand& render) {
     r->add_option(
         "--preset", render.preset,
         "encoder preset, ultrafast .. veryslow (default medium; ultrafast with --preview)");
-    r->add_flag("--preview", render.preview,
-                "quick look: 640x360, no shadows, no anti-aliasing (explicit options still apply)");
+    r->add_flag(
+        "--preview", render.preview,
+        "quick look: 640x360, no shadows, anti-aliasing, AO or reflections (explicit options "
+        "still apply)");
 }
 
 // On/off pairs that override the scene's render settings only when given.
@@ -55,6 +57,11 @@ void add_switches(CLI::App* r, RenderCommand& render) {
             std::string("turn --") + name + " off");
     };
     on_off("shadows", render.shadows, "shadows from the key light");
+    on_off("soft-shadows", render.soft_shadows,
+           "shadow edges that harden towards the contact (the light's angle sets how soft)");
+    on_off("ao", render.ambient_occlusion,
+           "ambient occlusion: bodies darken the ground and each other where they meet");
+    on_off("reflections", render.reflections, "the bodies mirrored in a polished ground");
     on_off("aa", render.antialiasing, "4x multisample anti-aliasing");
     on_off("overlay", render.overlay,
            "time, step, integrator, energy and momentum in the top-left corner");

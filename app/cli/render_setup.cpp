@@ -14,16 +14,21 @@ namespace tumble::app {
 
 void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     RenderSettings& rs = scene.render;
-    if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing
+    if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing, no extras
         rs.width = 640;
         rs.height = 360;
         rs.shadows = false;
         rs.antialiasing = false;
+        rs.ambient_occlusion = false;
+        rs.reflections = false;
     }
     if (cmd.width) rs.width = *cmd.width;
     if (cmd.height) rs.height = *cmd.height;
     if (cmd.fps) rs.fps = *cmd.fps;
     if (cmd.shadows) rs.shadows = *cmd.shadows;
+    if (cmd.soft_shadows) rs.soft_shadows = *cmd.soft_shadows;
+    if (cmd.ambient_occlusion) rs.ambient_occlusion = *cmd.ambient_occlusion;
+    if (cmd.reflections) rs.reflections = *cmd.reflections;
     if (cmd.antialiasing) rs.antialiasing = *cmd.antialiasing;
     if (cmd.overlay) rs.overlay = *cmd.overlay;
     if (cmd.axes) rs.axes = *cmd.axes;

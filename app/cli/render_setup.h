@@ -25,8 +25,9 @@ struct RenderCommand {
     // Encoder preset; unset: "medium", or "ultrafast" with --preview (video_preset()).
     std::optional<std::string> preset;
     // Picture switches; unset ones keep the scene's render settings.
-    bool preview = false; // 640x360 (unless --width/--height), no shadows, no anti-aliasing
-    std::optional<bool> shadows, antialiasing, overlay, axes, vectors;
+    bool preview = false; // 640x360 (unless --width/--height), no shadows, AA, AO or reflections
+    std::optional<bool> shadows, soft_shadows, ambient_occlusion, reflections, antialiasing,
+        overlay, axes, vectors;
     bool stats = false;     // print each pipeline stage's rate
     bool overwrite = false; // a frame folder may hold an earlier run's frames: remove them first
     // Integrators drawn side by side, each stepping its own copy of the scene (compare_command).

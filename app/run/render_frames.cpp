@@ -16,6 +16,9 @@ render::RenderOptions render_options(const RenderSettings& rs) {
     o.height = rs.height;
     o.samples = rs.antialiasing ? 4 : 1;
     o.shadows = rs.shadows;
+    o.soft_shadows = rs.soft_shadows;
+    o.ambient_occlusion = rs.ambient_occlusion;
+    o.reflections = rs.reflections;
     return o;
 }
 

@@ -32,11 +32,14 @@ struct RenderSettings {
     CameraRig camera; // fixed, orbiting, following a body or on a path (app/scene/camera_rig.h)
     render::Light light;
     glm::vec3 background{0.62f, 0.72f, 0.85f};
-    bool shadows = true;      // shadow map from the key light
-    bool antialiasing = true; // 4x multisampling
-    bool overlay = false;     // time, step, integrator, energy, momentum in the top-left corner
-    bool axes = false;        // every body's own x, y, z axes as red, green, blue rods
-    bool vectors = false;     // w and L arrows at each dynamic body (app/view/vector_arrows.h)
+    bool shadows = true;           // shadow map from the key light
+    bool soft_shadows = true;      // shadow edges that harden towards the contact (light.angle)
+    bool ambient_occlusion = true; // bodies darken the ground and each other where they meet
+    bool reflections = false;      // the bodies mirrored in the ground
+    bool antialiasing = true;      // 4x multisampling
+    bool overlay = false; // time, step, integrator, energy, momentum in the top-left corner
+    bool axes = false;    // every body's own x, y, z axes as red, green, blue rods
+    bool vectors = false; // w and L arrows at each dynamic body (app/view/vector_arrows.h)
 };
 
 struct Scene {

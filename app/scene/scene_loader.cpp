@@ -49,6 +49,11 @@ void read_light(JsonReader r, render::Light& l) {
     if (auto c = r.optional("color")) l.color = read_color(*c);
     if (auto a = r.optional("ambient"))
         l.ambient = static_cast<float>(a->non_negative("a non-negative ambient fraction"));
+    if (auto a = r.optional("angle")) {
+        const double deg = a->non_negative("the light's angular diameter in degrees, 0 to 20");
+        if (deg > 20.0) a->fail("expected the light's angular diameter in degrees, 0 to 20");
+        l.angle_deg = static_cast<float>(deg);
+    }
     r.finish();
 }
 
@@ -62,6 +67,9 @@ void read_render(JsonReader r, RenderSettings& rs) {
     if (auto l = r.optional("light")) read_light(*l, rs.light);
     if (auto b = r.optional("background")) rs.background = read_color(*b);
     if (auto v = r.optional("shadows")) rs.shadows = v->boolean();
+    if (auto v = r.optional("soft_shadows")) rs.soft_shadows = v->boolean();
+    if (auto v = r.optional("ambient_occlusion")) rs.ambient_occlusion = v->boolean();
+    if (auto v = r.optional("reflections")) rs.reflections = v->boolean();
     if (auto v = r.optional("antialiasing")) rs.antialiasing = v->boolean();
     if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
     if (auto v = r.optional("axes")) rs.axes = v->boolean();

@@ -89,6 +89,7 @@ void build_view(const Scene& scene, const physics::Model& model, const physics::
         instance.color = look.color;
         instance.material = look.material.value_or(default_material(shape.kind));
         instance.axes = scene.render.axes && shape.kind != physics::ShapeKind::Plane;
+        instance.body = i;
         view.instances.push_back(instance);
         if (shape.kind == physics::ShapeKind::Capsule)
             add_capsule_caps(shape, m, instance, view.instances);

@@ -33,3 +33,22 @@ vec3 sky_gradient(vec3 dir) {
     float elevation = clamp(dir.z / length(dir), 0.0, 1.0); // sine of the angle above horizon
     return mix(u_horizon, u_zenith, sqrt(elevation));       // sqrt: keeps the haze band thin
 }
+
+// --- Ambient occlusion (render/ambient_occlusion.h derives it) ---------------------------------
+// The fraction of the cosine-weighted sky above point p (unit normal n) that an ellipsoid hides.
+// The ellipsoid comes as three rows (row i of A, centre[i]), A mapping world offsets from its
+// centre onto the unit sphere. There a sphere of radius 1 at distance l in a direction at angle
+// theta from the normal hides cos(theta) / l^2 (its form factor); the normal maps by A^-T, whose
+// row i is row i of A over its squared length (A's rows are orthogonal: a rotation and a scale).
+// Inside the ellipsoid (l < 1) the point is buried: the occlusion rises to 1. It fades to 0
+// between l = 2 and l = 3, where the occluder's reach ends.
+float ellipsoid_occlusion(vec3 p, vec3 n, vec4 r0, vec4 r1, vec4 r2) {
+    vec3 e = vec3(r0.w, r1.w, r2.w) - p; // point -> centre, world
+    vec3 d = vec3(dot(r0.xyz, e), dot(r1.xyz, e), dot(r2.xyz, e));
+    vec3 m = vec3(dot(r0.xyz, n) / dot(r0.xyz, r0.xyz), dot(r1.xyz, n) / dot(r1.xyz, r1.xyz),
+                  dot(r2.xyz, n) / dot(r2.xyz, r2.xyz));
+    float l = length(d);
+    float occlusion = min(max(dot(normalize(m), d), 0.0) / (l * l * l), 1.0);
+    occlusion = mix(occlusion, 1.0, smoothstep(1.0, 0.7, l));
+    return occlusion * (1.0 - smoothstep(2.0, 3.0, l));
+}

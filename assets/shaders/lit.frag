@@ -1,7 +1,9 @@
 // lit.frag: shades one surface point, in linear light (see common.glsl):
 //   key light   Lambert diffuse + Blinn-Phong highlight, darkened where the shadow map says a
-//               caster is in the way (SHADOWS)
-//   ambient     light from the sky (more on faces turned up) on the diffuse colour
+//               caster is in the way (SHADOWS), with edges that harden towards the contact
+//               (SOFT_SHADOWS)
+//   ambient     light from the sky (more on faces turned up) on the diffuse colour, less where a
+//               nearby body hides the sky (AMBIENT_OCCLUSION)
 //   reflection  the sky and ground mirrored in the surface, weighted by Fresnel (Schlick): strong
 //               at grazing angles, blurred towards the average sky the rougher the surface
 //   fog         distant points fade into the sky colour
@@ -13,6 +15,7 @@ in vec2 v_local;         // unit-mesh x, y (the ground's square is [-1, 1]^2)
 flat in vec3 v_albedo;   // linear base colour
 flat in vec4 v_material; // shininess, specular, metallic, gloss (1 - roughness)
 flat in float v_checker; // 1 on the ground
+flat in vec4 v_occluder[6]; // the two nearest other bodies as ellipsoids (common.glsl)
 
 out vec4 frag_color;
 
@@ -20,27 +23,69 @@ uniform vec3 u_camera_pos;  // world
 uniform vec3 u_light_dir;   // unit direction the light travels, world
 uniform vec3 u_light_color; // linear
 uniform float u_ambient;    // fraction of the base colour lit by ambient light
+uniform float u_mirror;     // 1 in the reflection pass (renderer.cpp), 0 otherwise
+uniform vec4 u_clip_plane;  // the mirror's plane (xyz its unit normal) in the reflection pass
 
 const float kSquare = 0.5;       // checker square size, metres
 const float kCheckerDark = 0.74; // dark squares' brightness relative to light ones
 const float kFogDistance = 60.0; // metres; fog covers 63% of the colour at this distance
+const float kFloorReflectance = 0.2; // of a reflecting floor, head-on
 
 #ifdef SHADOWS
 in vec3 v_shadow;
 uniform sampler2DShadow u_shadow_map;
 uniform float u_shadow_texel; // one texel in texture coordinates
 
-// Fraction of the key light reaching this point: 1 lit, 0 in full shadow. Each lookup of a
+// Percentage-closer filter (Reeves et al. 1987) over about 2k + 1 texels: each lookup of a
 // sampler2DShadow with linear filtering blends the comparisons of the 2x2 nearest texels; four
-// of them half a texel either side of the point make a 3x3-texel tent filter, a soft edge about
-// two texels (2.5 cm) wide. Each lookup costs llvmpipe about 2 ms per 720p frame.
-float light_visibility() {
-    vec2 d = vec2(0.5 * u_shadow_texel);
+// of them k/2 texels either side of the point make, for k = 1, a 3x3-texel tent, a soft edge
+// about two texels wide. Wider (soft shadows) the four spread apart: at k = 2.5 their 2x2
+// footprints just touch, and the edge shows two faint steps instead of a smooth ramp. More
+// lookups would smooth it, but llvmpipe runs every lookup for every pixel (a branch saves
+// nothing when a neighbour takes it) at about 2 ms per 720p frame each.
+float pcf(float k) {
+    vec2 d = vec2(0.5 * k * u_shadow_texel);
     return 0.25 * (texture(u_shadow_map, vec3(v_shadow.xy + vec2(-d.x, -d.y), v_shadow.z)) +
                    texture(u_shadow_map, vec3(v_shadow.xy + vec2(d.x, -d.y), v_shadow.z)) +
                    texture(u_shadow_map, vec3(v_shadow.xy + vec2(-d.x, d.y), v_shadow.z)) +
                    texture(u_shadow_map, vec3(v_shadow.xy + vec2(d.x, d.y), v_shadow.z)));
 }
+
+#ifdef SOFT_SHADOWS
+uniform sampler2D u_shadow_depth; // the same map read as raw depths (no comparison)
+uniform float u_penumbra_scale;   // penumbra width in texels per unit of map depth between
+                                  // caster and receiver: 2 tan(light's angular radius) x the
+                                  // map's depth range / texel size
+const float kMaxSoftness = 2.0;   // texels of half-width: pcf()'s four taps stay one ramp
+
+// Contact-hardening shadows (percentage-closer soft shadows, Fernando 2005). A light of angular
+// radius a throws a penumbra of width w = 2 tan(a) (z_receiver - z_blocker): sharp where a body
+// touches the ground, soft under a body high above it. 1) Blocker search: 16 raw depths around
+// the point (four textureGather lookups), as far out as the widest penumbra a blocker between
+// here and the light could throw; their mean over those nearer the light than the receiver is
+// z_blocker. No blocker among them: the point is lit. 2) The filter above, w wide.
+float light_visibility() {
+    float z = v_shadow.z;
+    float reach = clamp(0.5 * u_penumbra_scale * z, 1.0, kMaxSoftness);
+    vec2 s = vec2(0.5 * reach * u_shadow_texel);
+    vec4 g[4];
+    g[0] = textureGather(u_shadow_depth, v_shadow.xy + vec2(-s.x, -s.y));
+    g[1] = textureGather(u_shadow_depth, v_shadow.xy + vec2(s.x, -s.y));
+    g[2] = textureGather(u_shadow_depth, v_shadow.xy + vec2(-s.x, s.y));
+    g[3] = textureGather(u_shadow_depth, v_shadow.xy + vec2(s.x, s.y));
+    float sum = 0.0, count = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        vec4 blocker = step(g[i], vec4(z)); // 1 where the texel is nearer the light
+        sum += dot(blocker, g[i]);
+        count += dot(blocker, vec4(1.0));
+    }
+    if (count == 0.0) return 1.0;
+    float width = (z - sum / count) * u_penumbra_scale;
+    return pcf(clamp(0.5 * width, 1.0, kMaxSoftness));
+}
+#else
+float light_visibility() { return pcf(1.0); }
+#endif
 #endif
 
 // A checkerboard of unit squares: 1 on light squares, 0 on dark ones. Averaged over the pixel's
@@ -91,16 +136,22 @@ void main() {
     vec3 key = n_dot_l * ((1.0 - metallic) * albedo + specular * highlight * highlight_color);
     key *= visibility * u_light_color;
 
-    // Ambient: light from everywhere, a little stronger from the sky above than from the ground.
+    // Ambient: light from everywhere, a little stronger from the sky above than from the ground,
+    // less where nearby bodies hide the sky.
     float sky_facing = 0.5 + 0.5 * n.z;
-    vec3 ambient = u_ambient * mix(0.6, 1.0, sky_facing) * (1.0 - 0.7 * metallic) * albedo;
+    float sky_seen = 1.0;
+#ifdef AMBIENT_OCCLUSION
+    sky_seen = (1.0 - ellipsoid_occlusion(v_world, n, v_occluder[0], v_occluder[1], v_occluder[2])) *
+               (1.0 - ellipsoid_occlusion(v_world, n, v_occluder[3], v_occluder[4], v_occluder[5]));
+#endif
+    vec3 ambient = sky_seen * u_ambient * mix(0.6, 1.0, sky_facing) * (1.0 - 0.7 * metallic) * albedo;
 
     // Reflection of the surroundings, Fresnel-weighted: 4% head-on for a dielectric, the base
     // colour for a metal, rising to 100% at grazing angles.
     vec3 f0 = mix(vec3(0.04), albedo, metallic);
     float c = 1.0 - max(dot(n, v), 0.0);
     vec3 fresnel = f0 + (1.0 - f0) * (c * c * c * c * c) * gloss;
-    vec3 reflection = specular * fresnel * environment(reflect(-v, n), gloss);
+    vec3 reflection = sky_seen * specular * fresnel * environment(reflect(-v, n), gloss);
 
     vec3 color = key + ambient + reflection;
 
@@ -110,5 +161,15 @@ void main() {
     // The ground is a finite square: its outer fifth fades into the sky as the fog would, so its
     // edge melts into the horizon instead of cutting across it.
     if (v_checker > 0.5) fog = max(fog, smoothstep(0.8, 1.0, max(abs(v_local.x), abs(v_local.y))));
-    frag_color = output_color(mix(color, sky_gradient(view), fog));
+    color = mix(color, sky_gradient(view), fog);
+    frag_color = output_color(color);
+    if (u_mirror > 0.0) {
+        // Seen in the floor: the fraction R that a polished floor reflects, Fresnel-weighted
+        // (Schlick) from kFloorReflectance head-on towards all of it at grazing angles. Stored
+        // premultiplied, with R in alpha: the floor drawn over it keeps 1 - R of its own colour
+        // (renderer.cpp, the blend of the ground in scene_pass).
+        float f = 1.0 - abs(dot(normalize(view), u_clip_plane.xyz));
+        float r = kFloorReflectance + (1.0 - kFloorReflectance) * (f * f * f * f * f);
+        frag_color = vec4(frag_color.rgb * r, r);
+    }
 }

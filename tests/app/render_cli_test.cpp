@@ -95,12 +95,14 @@ TEST(RenderCli, SwitchesChangeThePictureAndStatsReportEveryStage) {
         return image(dir / name);
     };
     const render::Image all = still("", "all.png");
-    for (const char* flag : {"--no-shadows", "--no-aa", "--no-overlay", "--no-axes"})
+    for (const char* flag :
+         {"--no-shadows", "--no-aa", "--no-overlay", "--no-axes", "--no-ao", "--reflections"})
         EXPECT_NE(still(flag, "x.png").rgb, all.rgb) << flag;
     const render::Image preview = still("--preview", "p.png");
     EXPECT_EQ(preview.width, 640);
     EXPECT_EQ(preview.height, 360);
-    EXPECT_EQ(still("--preview --width 160 --height 96 --shadows --aa", "pa.png").rgb, all.rgb);
+    EXPECT_EQ(still("--preview --width 160 --height 96 --shadows --aa --ao", "pa.png").rgb,
+              all.rgb);
 
     const CliResult r = run_tumble(dir, "render s.json -o null --stats -q");
     ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -132,10 +132,12 @@ TEST(Batches, InstancesOfABatchAreOrderedNearestFirst) {
     }
 }
 
-TEST(Batches, InstanceDataCarriesNormalMatrixAndMaterial) {
+TEST(Batches, InstanceDataCarriesColourMaterialAndNoOccluder) {
     const glm::mat4 squash = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, 0.25f));
     const InstanceData d = make_instance_data(squash, {0.2f, 0.4f, 0.6f}, {0.0f, 0.7f, 1.0f}, true);
-    EXPECT_FLOAT_EQ(d.normal_matrix[2][2], 4.0f); // normals stretch where the shape squashes
+    EXPECT_FLOAT_EQ(d.material.w, 1.0f); // gloss = 1 - roughness: a polished surface
+    // No occluder yet: each slot holds a unit sphere 1 km away, whose occlusion has faded to 0.
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_GE(std::abs(d.occluders[k].w), 999.0f);
     // sRGB in, linear out (IEC 61966-2-1: 0.2 -> 0.0331, 0.4 -> 0.1329, 0.6 -> 0.3185).
     EXPECT_NEAR(d.color.r, 0.03310f, 1e-4f);
     EXPECT_NEAR(d.color.g, 0.13287f, 1e-4f);
