@@ -127,9 +127,12 @@ std::vector<std::string> builtin_scene_names() {
 }
 
 Scene load_scene_argument(const std::string& argument) {
-    const std::string arg = argument.empty() ? "default" : argument;
+    std::string arg = argument.empty() ? "default" : argument;
+    // "builtin:NAME", as messages and summaries name a built-in scene, means that one only.
+    const bool builtin_only = arg.starts_with("builtin:");
+    if (builtin_only) arg.erase(0, 8);
     std::error_code ec;
-    if (std::filesystem::is_regular_file(arg, ec))
+    if (!builtin_only && std::filesystem::is_regular_file(arg, ec))
         return load_scene(read_input_file(arg, "scene"), arg);
     const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
     const std::string_view builtin = assets::find(std::filesystem::path(file).filename().string());

@@ -74,6 +74,17 @@ void expect_same_scene(const Scene& json, const scenes::Scene& code) {
     TUMBLE_MEASURED(differing, 0);
 }
 
+TEST(SceneAssets, ABuiltInSceneLoadsByItsNameAndAsMessagesNameIt) {
+    // Summaries and errors call a built-in scene "builtin:dominoes.json": pasted back, it loads.
+    const app::Scene by_name = app::load_scene_argument("dominoes");
+    for (const char* arg : {"builtin:dominoes", "builtin:dominoes.json"}) {
+        const app::Scene s = app::load_scene_argument(arg);
+        EXPECT_EQ(s.source, by_name.source) << arg;
+        EXPECT_EQ(s.bodies.size(), by_name.bodies.size()) << arg;
+    }
+    EXPECT_THROW(app::load_scene_argument("builtin:no_such_scene"), app::SceneError);
+}
+
 TEST(SceneAssets, SphereRainIsExactlyTheSceneBuiltInCode) {
     expect_same_scene(load_file(scenes_dir() / "sphere_rain.json"), scenes::sphere_rain(10, true));
     expect_same_scene(load_file(scenes_dir() / "sphere_columns.json"),
