@@ -22,6 +22,11 @@ struct Diagnostics {
 
 Diagnostics diagnose(const Model& model, const State& state);
 
+// One body's share: its energies and linear momentum, and its angular momentum about its own
+// centre of mass (the spin I_w w, the L of Euler's equations tau = dL/dt = I dw/dt + w x I w),
+// not about the origin. Zero for a static body.
+Diagnostics diagnose_body(const Model& model, const State& state, int body);
+
 // Spin angular momentum of one body about its centre of mass, I_w w, world frame.
 Vec3 spin_angular_momentum(const Model& model, const State& state, int body);
 

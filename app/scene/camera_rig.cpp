@@ -1,5 +1,7 @@
 #include "app/scene/camera_rig.h"
 
+#include "app/scene/body_reference.h"
+
 #include "app/scene/scene_values.h"
 
 #include <glm/gtc/constants.hpp>
@@ -127,29 +129,7 @@ void read_camera_rig(JsonReader r, CameraRig& rig) {
 void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names,
                            const std::string& file) {
     if (rig.mode != CameraRig::Mode::Follow) return;
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == rig.follow_name) {
-            rig.follow_body = int(i);
-            return;
-        }
-    // A body index: digits only (from_chars takes no sign, space or "+" for an unsigned), and
-    // too many of them is out of range, not an exception (std::stoul threw std::out_of_range).
-    const std::string& n = rig.follow_name;
-    std::size_t index = 0;
-    const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), index);
-    if (!n.empty() && ec == std::errc() && end == n.data() + n.size() && index < names.size()) {
-        rig.follow_body = int(index);
-        return;
-    }
-    // Short whatever the scene: the first few names, a long one as an excerpt (describe_json).
-    constexpr std::size_t kListed = 8, kLongName = 60;
-    std::string known;
-    for (std::size_t i = 0; i < std::min(names.size(), kListed); ++i)
-        known +=
-            (i ? ", " : "") + (names[i].size() <= kLongName ? names[i] : describe_json(names[i]));
-    if (names.size() > kListed) known += ", ... (" + std::to_string(names.size()) + " bodies)";
-    throw SceneError(file, rig.follow_path,
-                     "no body named " + describe_json(n) + " to follow (bodies: " + known + ")");
+    rig.follow_body = find_body(names, rig.follow_name, file, rig.follow_path, "follow");
 }
 
 } // namespace tumble::app

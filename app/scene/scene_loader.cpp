@@ -57,6 +57,39 @@ void read_light(JsonReader r, render::Light& l) {
     r.finish();
 }
 
+// render.chart: {"quantities": ["energy", "w_body"], "body": "book", "window": 5}
+void read_chart(JsonReader r, RenderSettings& rs) {
+    JsonReader q = r.field("quantities");
+    if (q.size() == 0) q.fail("expected a list of quantities to chart: " + chart_quantity_names());
+    rs.chart.clear();
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        JsonReader item = q.at(i);
+        const auto quantity = parse_chart_quantity(item.string());
+        if (!quantity) item.fail("expected one of " + chart_quantity_names());
+        rs.chart.push_back(*quantity);
+    }
+    if (auto b = r.optional("body")) rs.chart_body = {b->string(), b->path()};
+    if (auto w = r.optional("window"))
+        rs.chart_window = w->non_negative("a window in seconds (0: the whole run)");
+    r.finish();
+}
+
+// render.trails: true, or {"seconds": 3, "axis": "x"}
+void read_trails(JsonReader r, RenderSettings& rs) {
+    if (r.value().is_boolean()) {
+        rs.trails = r.boolean();
+        return;
+    }
+    rs.trails = true;
+    if (auto s = r.optional("seconds")) rs.trail_seconds = s->positive("a trail length in seconds");
+    if (auto a = r.optional("axis")) {
+        const std::string axis = a->string();
+        if (axis != "x" && axis != "y" && axis != "z") a->fail("expected \"x\", \"y\" or \"z\"");
+        rs.trail_axis = axis[0] - 'x';
+    }
+    r.finish();
+}
+
 void read_render(JsonReader r, RenderSettings& rs) {
     if (auto w = r.optional("width"))
         rs.width = w->integer(rs.kMinSide, rs.kMaxWidth, "an image width in pixels");
@@ -74,6 +107,10 @@ void read_render(JsonReader r, RenderSettings& rs) {
     if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
     if (auto v = r.optional("axes")) rs.axes = v->boolean();
     if (auto v = r.optional("vectors")) rs.vectors = v->boolean();
+    if (auto c = r.optional("chart")) read_chart(*c, rs);
+    if (auto t = r.optional("trails")) read_trails(*t, rs);
+    if (auto p = r.optional("poinsot")) rs.poinsot = {p->string(), p->path()};
+    if (auto o = r.optional("overlay_body")) rs.overlay_body = {o->string(), o->path()};
     r.finish();
 }
 
@@ -104,6 +141,10 @@ Scene load_scene(const std::string& text, const std::string& source) {
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);
+    std::vector<bool> dynamic;
+    for (const physics::BodyDef& b : s.bodies)
+        dynamic.push_back(b.motion == physics::Motion::Dynamic);
+    resolve_render_bodies(s.render, names, dynamic, source);
     // Physics validation, mapped to JSON paths; then what is legal but probably unintended.
     const CheckedStart start = build_checked(s, s.world.dt);
     s.warnings = initial_state_warnings(s, start.model, start.state);
