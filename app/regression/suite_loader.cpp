@@ -261,6 +261,9 @@ std::size_t Suite::check_count() const {
 Suite load_suite(const std::filesystem::path& path) {
     const nlohmann::json root = parse_json(read_input_file(path, "suite"), path.string());
     ObjectReader r(JsonReader(root, path.string(), ""), fields::suite());
+    if (root.contains("bodies") && !root.contains("scenes"))
+        r.fail("this is a scene file, not a suite: a suite lists \"scenes\" and their checks "
+               "(docs/regression-testing.md)");
     const FieldValue version = r.field("format_version");
     if (version.integer() != kSuiteFormatVersion)
         version.fail("this tumble reads suite format_version " +
