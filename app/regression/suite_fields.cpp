@@ -124,7 +124,8 @@ const Table& suite() {
         "suite",
         "a Tumble regression suite (docs/regression-testing.md)",
         {{"$schema", string(), "the schema this file follows (for editors; not read)"},
-         {"format_version", integer(1, 1000), "the suite format version", true},
+         {"format_version", integer(kSuiteFormatVersion, kSuiteFormatVersion),
+          "the suite format version, 1", true},
          {"title", string(), "a title for reports"},
          {"goldens", string(),
           "the folder of the golden files, relative to the suite's folder (default: that "

@@ -27,6 +27,12 @@ Type number_in(double lo, double hi) {
     t.maximum = hi;
     return t;
 }
+Type positive_below(double hi) {
+    Type t = positive();
+    t.maximum = hi;
+    t.exclusive_maximum = true;
+    return t;
+}
 Type integer(int lo, int hi) {
     Type t;
     t.kind = Type::Kind::kInteger;
@@ -96,7 +102,7 @@ double FieldValue::number() const {
     const Type& t = f_->type;
     const double x = r_.number(f_->expected.c_str());
     const bool low = t.minimum && (t.exclusive_minimum ? !(x > *t.minimum) : x < *t.minimum);
-    const bool high = t.maximum && x > *t.maximum;
+    const bool high = t.maximum && (t.exclusive_maximum ? !(x < *t.maximum) : x > *t.maximum);
     if (low || high) fail("expected " + f_->expected + ", got " + describe_json(value()));
     return x;
 }

@@ -26,6 +26,7 @@ struct Type {
     Kind kind = Kind::kNumber;
     std::optional<double> minimum, maximum; // numbers, integers (inclusive)
     bool exclusive_minimum = false;         // minimum excluded (a positive number)
+    bool exclusive_maximum = false;         // maximum excluded
     std::vector<std::string> one_of;        // strings: the allowed values (empty: any string)
     std::string pattern;                    // strings: an ECMA-262 regular expression
     std::shared_ptr<const Field> items;     // arrays, maps: every element (its name is empty)
@@ -39,6 +40,7 @@ Type number();       // finite
 Type positive();     // finite, > 0
 Type non_negative(); // finite, >= 0
 Type number_in(double lo, double hi);
+Type positive_below(double hi); // 0 < x < hi
 Type integer(int lo, int hi);
 Type boolean();
 Type string();

@@ -7,6 +7,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// An integer's bounds as integers (64, not 64.0), a number's as they are.
+Json bound(const Type& t, double v) {
+    if (t.kind == Type::Kind::kInteger) return static_cast<long long>(v);
+    return v;
+}
+
 class SchemaWriter {
   public:
     Json table(const Table& t) {
@@ -47,8 +53,10 @@ class SchemaWriter {
         case K::kNumber:
         case K::kInteger:
             out["type"] = t.kind == K::kNumber ? "number" : "integer";
-            if (t.minimum) out[t.exclusive_minimum ? "exclusiveMinimum" : "minimum"] = *t.minimum;
-            if (t.maximum) out["maximum"] = *t.maximum;
+            if (t.minimum)
+                out[t.exclusive_minimum ? "exclusiveMinimum" : "minimum"] = bound(t, *t.minimum);
+            if (t.maximum)
+                out[t.exclusive_maximum ? "exclusiveMaximum" : "maximum"] = bound(t, *t.maximum);
             break;
         case K::kBoolean:
             out["type"] = "boolean";

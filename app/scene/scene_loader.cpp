@@ -5,6 +5,7 @@
 
 #include "app/scene/input_file.h"
 #include "app/scene/scene_check.h"
+#include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
 #include <filesystem>
@@ -13,15 +14,14 @@ namespace tumble::app {
 namespace {
 
 constexpr int kFormatVersion = 1;
+namespace fields = scene_fields;
 
-void read_world(JsonReader r, Scene& s) {
-    if (auto g = r.optional("gravity"))
-        s.world.gravity = read_vec3(*g, "gravity [x, y, z] in m/s^2");
-    if (auto dt = r.optional("dt")) s.world.dt = dt->positive("a positive time step in seconds");
-    if (auto d = r.optional("duration")) s.duration = d->positive("a positive duration in seconds");
+void read_world(ObjectReader r, Scene& s) {
+    if (auto g = r.optional("gravity")) s.world.gravity = read_vec3(*g);
+    if (auto dt = r.optional("dt")) s.world.dt = dt->number();
+    if (auto d = r.optional("duration")) s.duration = d->number();
     if (auto i = r.optional("integrator")) {
-        const std::string name = i->string();
-        const auto id = physics::integrator_from_name(name);
+        const auto id = physics::integrator_from_name(i->string());
         if (!id)
             i->fail("unknown integrator " + describe_json(i->value()) +
                     "; valid integrators: " + physics::integrator_names());
@@ -29,38 +29,31 @@ void read_world(JsonReader r, Scene& s) {
     }
     physics::ContactSettings& c = s.world.contact; // physics/contact_model.h
     if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
-    if (auto v = r.optional("substeps"))
-        c.substeps = v->integer(0, 64, "contact substeps per step (0: automatic)");
-    if (auto v = r.optional("iterations"))
-        c.iterations = v->integer(1, 64, "contact solve sweeps per substep, 1..64");
-    if (auto v = r.optional("restitution_threshold"))
-        c.restitution_threshold = v->non_negative("an impact speed >= 0 in m/s");
-    if (auto v = r.optional("parallel_min_bodies"))
-        c.parallel_min_bodies =
-            v->integer(0, 1 << 30, "a body count >= 0 from which --threads is used");
+    if (auto v = r.optional("substeps")) c.substeps = v->integer();
+    if (auto v = r.optional("iterations")) c.iterations = v->integer();
+    if (auto v = r.optional("restitution_threshold")) c.restitution_threshold = v->number();
+    if (auto v = r.optional("parallel_min_bodies")) c.parallel_min_bodies = v->integer();
     r.finish();
 }
 
-void read_light(JsonReader r, render::Light& l) {
+void read_light(ObjectReader r, render::Light& l) {
     if (auto d = r.optional("direction")) {
-        l.direction = read_glm_vec3(*d, "the direction the light travels [x, y, z]");
+        l.direction = read_glm_vec3(*d);
         if (glm::length(l.direction) == 0.0f) d->fail("expected a non-zero light direction");
     }
-    if (auto c = r.optional("color")) l.color = read_color(*c);
-    if (auto a = r.optional("ambient"))
-        l.ambient = static_cast<float>(a->non_negative("a non-negative ambient fraction"));
+    if (auto c = r.optional("color")) l.color = read_color(c->reader());
+    if (auto a = r.optional("ambient")) l.ambient = static_cast<float>(a->number());
     r.finish();
 }
 
-void read_render(JsonReader r, RenderSettings& rs) {
-    if (auto w = r.optional("width"))
-        rs.width = w->integer(rs.kMinSide, rs.kMaxWidth, "an image width in pixels");
-    if (auto h = r.optional("height"))
-        rs.height = h->integer(rs.kMinSide, rs.kMaxHeight, "an image height in pixels");
-    if (auto f = r.optional("fps")) rs.fps = f->integer(1, 1000, "frames per second");
-    if (auto c = r.optional("camera")) read_camera_rig(*c, rs.camera);
-    if (auto l = r.optional("light")) read_light(*l, rs.light);
-    if (auto b = r.optional("background")) rs.background = read_color(*b);
+void read_render(ObjectReader r, RenderSettings& rs) {
+    if (auto w = r.optional("width")) rs.width = w->integer();
+    if (auto h = r.optional("height")) rs.height = h->integer();
+    if (auto f = r.optional("fps")) rs.fps = f->integer();
+    if (auto c = r.optional("camera")) read_camera_rig(c->reader(), rs.camera);
+    if (auto l = r.optional("light"))
+        read_light(ObjectReader(l->reader(), fields::light()), rs.light);
+    if (auto b = r.optional("background")) rs.background = read_color(b->reader());
     if (auto v = r.optional("shadows")) rs.shadows = v->boolean();
     if (auto v = r.optional("antialiasing")) rs.antialiasing = v->boolean();
     if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
@@ -73,25 +66,28 @@ void read_render(JsonReader r, RenderSettings& rs) {
 
 Scene load_scene(const std::string& text, const std::string& source) {
     const nlohmann::json root = parse_json(text, source);
-    JsonReader r(root, source, "");
-    if (!root.is_object()) r.fail("expected a scene object { \"format_version\": 1, ... }");
-    const int version = r.field("format_version").integer(1, 1000, "the scene format version");
+    if (!root.is_object())
+        JsonReader(root, source, "").fail("expected a scene object { \"format_version\": 1, ... }");
+    ObjectReader r(JsonReader(root, source, ""), fields::scene());
+    const FieldValue format = r.field("format_version");
+    // Read wider than the table's [1, 1], to say which version this tumble reads.
+    const int version = format.reader().integer(1, 1000, "the scene format version");
     if (version != kFormatVersion)
-        r.field("format_version")
-            .fail("this tumble reads format_version " + std::to_string(kFormatVersion) + ", got " +
-                  std::to_string(version));
+        format.fail("this tumble reads format_version " + std::to_string(kFormatVersion) +
+                    ", got " + std::to_string(version));
     Scene s;
     s.source = source;
     if (auto t = r.optional("title")) s.title = t->string();
-    if (auto w = r.optional("world")) read_world(*w, s);
-    if (auto rs = r.optional("render")) read_render(*rs, s.render);
-    JsonReader bodies = r.field("bodies");
+    if (auto w = r.optional("world")) read_world(ObjectReader(w->reader(), fields::world()), s);
+    if (auto rs = r.optional("render"))
+        read_render(ObjectReader(rs->reader(), fields::render()), s.render);
+    const FieldValue bodies = r.field("bodies");
     const std::size_t n = bodies.size();
     s.bodies.resize(n);
     s.looks.resize(n);
     ShapeContext shapes{source, &s.meshes, {}};
     for (std::size_t i = 0; i < n; ++i)
-        read_body(bodies.at(i), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
+        read_body(bodies.at(i).reader(), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
     r.finish();
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
