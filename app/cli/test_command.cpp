@@ -13,6 +13,7 @@
 #include "app/regression/junit_report.h"
 #include "app/regression/suite.h"
 #include "app/regression/suite_runner.h"
+#include "app/run/interrupt.h"
 #include "io/bad_input.h"
 #include "io/output_target.h"
 
@@ -59,10 +60,18 @@ int run_test(const TestCommand& cmd) {
     check_outputs(cmd);
     const Suite suite = load_suite(cmd.suite);
     const Selection selection = select_checks(suite, cmd.filters);
+    InterruptGuard guard; // Ctrl-C: the scenes running finish, then nothing more is written
     std::printf("tumble test %s: %zu of %zu checks, %d job(s)\n", cmd.suite.c_str(),
                 selection.count, suite.check_count(), cmd.jobs);
     std::fflush(stdout);
     const SuiteRun run = run_suite(suite, selection, cmd.jobs);
+    if (run.interrupted) {
+        std::fprintf(stderr,
+                     "tumble: test interrupted after %zu of %zu checks; no report, "
+                     "JUnit file or golden written\n",
+                     run.results.size(), selection.count);
+        return interrupted_exit_code(InterruptGuard::signal_number());
+    }
     if (run.gl.known()) std::printf("GL: %s\n", run.gl.describe().c_str());
     print_results(run);
     if (!cmd.report.empty()) write_html_report(cmd.report, suite, run);
@@ -89,7 +98,8 @@ Subcommand add_test_command(CLI::App& app) {
     t->add_option("-j,--jobs", cmd->jobs, "scenes run in parallel (default 1); same results")
         ->check(CLI::Range(1, 256));
     t->add_option("--filter", cmd->filters,
-                  "only checks whose name or scene name matches this shell pattern (repeatable)");
+                  "only checks whose name or scene name matches this shell pattern (repeatable)")
+        ->allow_extra_args(false); // one pattern per --filter: `--filter a suite.json` works
     t->add_flag("--update", cmd->update,
                 "write the goldens of failing checks from this run and list them");
     t->add_flag("--force", cmd->force,

@@ -81,6 +81,7 @@ struct SuiteRun {
     std::vector<double> scene_seconds; // wall time of each scene's pass, by scene index
     double seconds = 0.0;
     int jobs = 1;
+    bool interrupted = false; // Ctrl-C or SIGTERM: scenes not yet started were not run
     std::size_t failed() const;
 };
 

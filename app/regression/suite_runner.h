@@ -26,6 +26,8 @@ struct Selection {
 };
 Selection select_checks(const Suite& suite, const std::vector<std::string>& filters);
 
+// On Ctrl-C or SIGTERM (app/run/interrupt.h, which the caller installs) the scenes running
+// finish and no other starts; the run says it was interrupted.
 SuiteRun run_suite(const Suite& suite, const Selection& selection, int jobs);
 
 // The command that rewrites one check's golden on purpose, as a user types it.
