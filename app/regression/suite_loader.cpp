@@ -130,10 +130,16 @@ void read_image(ObjectReader r, SuiteScene& s, Context& c) {
 // The scene's body called `name`, by index; SceneError at `at` naming the scene's bodies.
 int find_body(const FieldValue& at, const Scene& scene, const std::string& name) {
     std::string known;
+    int found = -1;
     for (std::size_t i = 0; i < scene.looks.size(); ++i) {
-        if (scene.looks[i].name == name) return static_cast<int>(i);
+        if (scene.looks[i].name == name && found >= 0)
+            at.fail("bodies " + std::to_string(found) + " and " + std::to_string(i) + " of " +
+                    scene.source + " are both named " + describe_json(name) +
+                    ": give them names of their own");
+        if (scene.looks[i].name == name) found = static_cast<int>(i);
         if (i < 8) known += (i ? ", " : "") + scene.looks[i].name;
     }
+    if (found >= 0) return found;
     if (scene.looks.size() > 8) known += ", ... (" + std::to_string(scene.looks.size()) + ")";
     at.fail("no body named " + describe_json(name) + " in " + scene.source + " (bodies: " + known +
             ")");

@@ -99,8 +99,10 @@ TEST(RegressionReport, ChromiumDrawsTheReportWithTheFailureFirst) {
                   .exit_code,
               1);
     const std::string url = "file://" + (dir / "rep/index.html").string();
-    const std::string chromium = "chromium --headless --no-sandbox --disable-gpu "
-                                 "--no-first-run --disable-extensions ";
+    // A profile of its own: nothing read from or written to the user's ~/.config/chromium.
+    const std::string chromium = "chromium --headless --no-sandbox --disable-gpu --no-first-run "
+                                 "--disable-extensions --user-data-dir='" +
+                                 (dir / "profile").string() + "' ";
     CliResult r = run_shell(dir, chromium + "--window-size=1280,1600 --screenshot=" +
                                      (dir / "shot.png").string() + " '" + url + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -62,6 +62,11 @@ struct BadSuite {
     std::string message; // after "suite.json: "
 };
 
+// A scene whose two bodies share a name: a state check could not tell their rows apart.
+const char* kTwins = R"({"format_version": 1, "bodies": [
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.1}},
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.1}, "position": [1, 0, 0]}]})";
+
 std::string scene_with(const std::string& checks) {
     return R"({"format_version": 1, "scenes": [{"scene": "tossed_book", )" + checks + "}]}";
 }
@@ -120,6 +125,18 @@ TEST(StateChecks, BadSuitesNameTheFileAndTheJsonPath) {
         EXPECT_TRUE(contains(r.err, "tumble: error: suite.json: " + c.message)) << r.err;
         EXPECT_EQ(files_in(dir), std::vector<std::string>{"suite.json"}); // nothing written
     }
+}
+
+TEST(StateChecks, ABodyNameThatTwoBodiesShareIsRefused) {
+    const auto dir = scratch_dir();
+    write_text(dir / "twins.json", kTwins);
+    write_text(dir / "suite.json", R"({"format_version": 1, "scenes": [{"scene": "twins.json",
+        "states": [{"frames": [0], "bodies": ["ball"], "quantities": {"position": 0}}]}]})");
+    const CliResult r = run_tumble(dir, "test suite.json");
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_TRUE(contains(r.err, "suite.json: /scenes/0/states/0/bodies/0: bodies 0 and 1 of "
+                                "twins.json are both named \"ball\""))
+        << r.err;
 }
 
 } // namespace
