@@ -19,7 +19,8 @@ Subcommand add_bench_render_command(CLI::App& app);
 Subcommand add_simulate_command(CLI::App& app);
 Subcommand add_explain_command(CLI::App& app);
 Subcommand add_scenes_command(CLI::App& app);
-Subcommand add_goldens_command(CLI::App& app);
+Subcommand add_test_command(CLI::App& app);
+Subcommand add_schema_command(CLI::App& app);
 Subcommand add_diff_command(CLI::App& app);
 Subcommand add_study_command(CLI::App& app);
 Subcommand add_version_flag(CLI::App& app); // tumble --version
