@@ -35,6 +35,7 @@ bool FrameSource::next(render::SceneView& view) {
     } else {
         view.overlay.clear();
     }
+    if (observer_) observer_(k_, sim_);
     if (k_ >= last_)
         done_ = true;
     else

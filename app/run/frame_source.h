@@ -11,6 +11,7 @@
 #include "render/scene_view.h"
 
 #include <cstdint>
+#include <functional>
 
 namespace tumble::app {
 
@@ -25,6 +26,12 @@ class FrameSource {
     bool next(render::SceneView& view);
 
     std::int64_t next_frame() const { return k_; }
+
+    // Called by next() with each frame's index and the simulation at that frame's time, before
+    // it steps on: for callers that sample states at frame times (a regression suite's state
+    // checks) in the same pass that draws the frames.
+    using Observer = std::function<void(std::int64_t frame, const Simulation& sim)>;
+    void observe(Observer observer) { observer_ = std::move(observer); }
     const physics::Diagnostics& initial() const { return initial_; }
 
   private:
@@ -37,6 +44,7 @@ class FrameSource {
     bool done_ = false;
     physics::Diagnostics initial_;
     VectorArrows arrows_; // drawn when scene.render.vectors
+    Observer observer_;
 };
 
 } // namespace tumble::app

@@ -2,7 +2,7 @@
 
 #include "io/bad_input.h"
 
-#include "physics/diagnostics.h"
+#include "app/run/trajectory_rows.h"
 
 #include <cerrno>
 #include <cstring>
@@ -11,13 +11,6 @@
 
 namespace tumble::app {
 namespace {
-
-// CSV field: quoted, with inner quotes doubled (RFC 4180).
-std::string csv_quote(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
 
 std::FILE* open_or_throw(const io::AtomicFile& file) {
     if (!file.streaming()) {
@@ -58,10 +51,10 @@ TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
                                    ? diagnostics_path_for(interrupted_path_for(states_path))
                                    : interrupted_path_for(diagnostics_path);
     states_file_ = open_or_throw(states_);
-    std::fputs("step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n", states_file_);
+    std::fprintf(states_file_, "%s\n", kStatesHeader);
     if (diags_) {
         diags_file_ = open_or_throw(*diags_);
-        std::fputs("step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz\n", diags_file_);
+        std::fprintf(diags_file_, "%s\n", kDiagnosticsHeader);
     }
 }
 
@@ -71,24 +64,14 @@ TrajectoryWriter::~TrajectoryWriter() {
 }
 
 void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
-    const double t = s.time(m);
-    const long long step = static_cast<long long>(s.step);
-    for (int i = 0; i < m.body_count(); ++i) {
-        const physics::Pose p = physics::body_pose(m, s, i);
-        const physics::Quat& q = p.orientation;
-        std::fprintf(states_file_,
-                     "%lld,%.17g,%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
-                     "%.17g,%.17g,%.17g\n",
-                     step, t, i, csv_quote(scene_.looks[i].name).c_str(), p.position.x(),
-                     p.position.y(), p.position.z(), q.w(), q.x(), q.y(), q.z(), s.v[i].x(),
-                     s.v[i].y(), s.v[i].z(), s.w[i].x(), s.w[i].y(), s.w[i].z());
-    }
-    if (!diags_file_) return;
-    const physics::Diagnostics d = physics::diagnose(m, s);
-    const physics::Vec3 &P = d.linear_momentum, &L = d.angular_momentum;
-    std::fprintf(diags_file_, "%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                 step, t, d.kinetic(), d.potential, d.energy(), P.x(), P.y(), P.z(), L.x(), L.y(),
-                 L.z());
+    for (int i = 0; i < m.body_count(); ++i)
+        print_row(states_file_, state_row(m, s, i, scene_.looks[i].name));
+    if (diags_file_) print_row(diags_file_, diagnostics_row(m, s));
+}
+
+void TrajectoryWriter::write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics) {
+    for (const StateRow& r : rows) print_row(states_file_, r);
+    if (diags_file_) print_row(diags_file_, diagnostics);
 }
 
 std::vector<std::string> TrajectoryWriter::close_and_commit(bool interrupted) {

@@ -10,6 +10,7 @@
 // An output may be "-" (standard output) or a FIFO: rows then stream out as they are computed
 // (io/output_target.h). A run cut short is kept apart from a complete one: finish_interrupted()
 // stores it as <stem>.interrupted.csv, so an existing complete file of the same name survives.
+#include "app/run/trajectory_rows.h"
 #include "app/scene/scene.h"
 #include "io/atomic_file.h"
 #include "physics/model.h"
@@ -29,6 +30,8 @@ class TrajectoryWriter {
                      const Scene& scene);
     ~TrajectoryWriter();
     void write(const physics::Model& model, const physics::State& state);
+    // Rows made earlier (app/run/trajectory_rows.h), e.g. only some bodies at sampled times.
+    void write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics);
     // Closes both files and renames them into place; returns the paths written.
     std::vector<std::string> finish();
     // The same for a run that stopped early: into interrupted_path_for(...) names, leaving files

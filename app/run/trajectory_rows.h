@@ -1,0 +1,47 @@
+#pragma once
+// One row of each trajectory table (app/run/trajectory_writer.h has the columns and units): what
+// `tumble simulate` writes, what a regression suite's golden trajectory holds, and what its state
+// checks compare. Made from a state here, printed by the writer, parsed back by the reader
+// (app/run/trajectory_reader.h), so the three agree by construction.
+#include "physics/math.h"
+#include "physics/model.h"
+#include "physics/state.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace tumble::app {
+
+struct StateRow {
+    std::int64_t step = 0;
+    double t = 0.0;
+    int body = 0;
+    std::string name;
+    physics::Vec3 x = physics::Vec3::Zero(); // body origin, world, m
+    physics::Quat q = physics::Quat::Identity();
+    physics::Vec3 v = physics::Vec3::Zero(); // centre-of-mass velocity, world, m/s
+    physics::Vec3 w = physics::Vec3::Zero(); // angular velocity, world, rad/s
+};
+
+struct DiagnosticsRow {
+    std::int64_t step = 0;
+    double t = 0.0;
+    double kinetic = 0.0, potential = 0.0, energy = 0.0; // J
+    physics::Vec3 p = physics::Vec3::Zero();             // linear momentum, kg m/s
+    physics::Vec3 l = physics::Vec3::Zero(); // angular momentum about the origin, kg m^2/s
+};
+
+StateRow state_row(const physics::Model& model, const physics::State& state, int body,
+                   const std::string& name);
+DiagnosticsRow diagnostics_row(const physics::Model& model, const physics::State& state);
+
+inline constexpr const char* kStatesHeader = "step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
+inline constexpr const char* kDiagnosticsHeader =
+    "step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz";
+
+// One CSV line each (%.17g: doubles round-trip exactly; the name quoted as RFC 4180 says).
+void print_row(std::FILE* out, const StateRow& row);
+void print_row(std::FILE* out, const DiagnosticsRow& row);
+
+} // namespace tumble::app
