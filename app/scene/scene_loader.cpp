@@ -7,6 +7,7 @@
 #include "app/scene/scene_check.h"
 #include "app/scene/scene_values.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace tumble::app {
@@ -123,6 +124,8 @@ std::vector<std::string> builtin_scene_names() {
         std::string n(name);
         if (n.size() > 5 && n.ends_with(".json")) out.push_back(n.substr(0, n.size() - 5));
     }
+    std::stable_partition(out.begin(), out.end(),
+                          [](const std::string& n) { return n.find('/') == std::string::npos; });
     return out;
 }
 
@@ -135,9 +138,9 @@ Scene load_scene_argument(const std::string& argument) {
     if (!builtin_only && std::filesystem::is_regular_file(arg, ec))
         return load_scene(read_input_file(arg, "scene"), arg);
     const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
-    const std::string_view builtin = assets::find(std::filesystem::path(file).filename().string());
-    if (!builtin.empty() && arg.find('/') == std::string::npos)
-        return load_scene(std::string(builtin), "builtin:" + file);
+    const std::string_view builtin =
+        assets::find(file); // "default.json", "lessons/top_precession.json"
+    if (!builtin.empty()) return load_scene(std::string(builtin), "builtin:" + file);
     std::string names;
     for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
     throw SceneError(arg, "file",
