@@ -7,7 +7,9 @@
 #include "io/atomic_file.h"
 
 #include <array>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <sys/wait.h>
 
@@ -44,12 +46,15 @@ std::string script_text(const GnuplotFigure& f, const fs::path& script) {
     return s + "set output out\n" + f.body;
 }
 
-void write_whole(const io::AtomicFile& file, const std::string& text) {
+// Writes `text` to the file's temporary name; a failure (a full disk) names the figure it is for.
+void write_whole(const io::AtomicFile& file, const std::string& text, const fs::path& figure) {
     std::FILE* out = std::fopen(file.temp_path().c_str(), "wb");
-    const bool ok = out && std::fwrite(text.data(), 1, text.size(), out) == text.size();
-    if (out && std::fclose(out) != 0)
-        throw io::FileError("cannot write " + file.final_path().string());
-    if (!ok) throw io::FileError("cannot write " + file.final_path().string());
+    int error = out ? 0 : errno;
+    if (out && std::fwrite(text.data(), 1, text.size(), out) != text.size()) error = errno;
+    if (out && std::fclose(out) != 0 && error == 0) error = errno;
+    if (error != 0)
+        throw io::FileError("cannot write '" + file.final_path().string() + "' (for '" +
+                            figure.string() + "'): " + std::strerror(error));
 }
 
 // Runs `command` with its standard error joined to its output; returns (exit status, output).
@@ -91,17 +96,18 @@ void draw_with_gnuplot(const GnuplotFigure& f) {
     std::string variables; // -e 'name="temporary path"' for each input and the output
     for (const GnuplotData& d : f.data) {
         data.push_back(std::make_unique<io::AtomicFile>(d.file));
-        write_whole(*data.back(), d.text);
+        write_whole(*data.back(), d.text, f.figure);
         variables += " -e " + shell_quote(d.variable + "=" +
                                           gnuplot_quote(data.back()->temp_path().string()));
     }
     io::AtomicFile script_file(script), figure(f.figure);
-    write_whole(script_file, script_text(f, script));
+    write_whole(script_file, script_text(f, script), f.figure);
     variables += " -e " + shell_quote("out=" + gnuplot_quote(figure.temp_path().string()));
     const auto [status, messages] =
         run("gnuplot" + variables + " " + shell_quote(script_file.temp_path().string()));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw PlotError("gnuplot failed on " + script.string() + ":\n" + messages);
+        throw PlotError("gnuplot could not draw '" + f.figure.string() + "' from " +
+                        script.string() + ":\n" + messages);
     for (const auto& d : data) d->commit();
     script_file.commit();
     figure.commit(); // last: a figure on disk always has its script and data beside it

@@ -37,6 +37,9 @@ const std::vector<Room> kRooms = {
      {"physics/exact/"}},
     {"app/study", {"app/study/", "physics/", "io/"}, {}},
     {"app/regression", {"app/regression/", "app/scene/", "render/", "io/"}, {}},
+    {"app/plot",
+     {"app/plot/", "app/run/", "app/scene/", "app/study/", "physics/", "io/"},
+     {"physics/exact/"}},
     {"app/cli", {"app/", "physics/", "render/", "io/"}, {}},
     {"tests", {""}, {"bench/"}},
     {"bench", {""}, {"tests/", "app/"}},
@@ -112,6 +115,9 @@ TEST(House, TheCheckerRefusesBackwardIncludes) {
     EXPECT_FALSE(violation("app/run/still.cpp", "app/cli/failure.h").empty());
     EXPECT_FALSE(violation("app/view/camera.cpp", "app/run/timeline.h").empty());
     EXPECT_FALSE(violation("app/study/runner.cpp", "app/scene/scene.h").empty());
+    EXPECT_FALSE(violation("app/study/gnuplot.cpp", "app/plot/figure.h").empty());
+    EXPECT_FALSE(violation("app/plot/figure.cpp", "app/cli/failure.h").empty());
+    EXPECT_FALSE(violation("app/plot/figure.cpp", "app/view/camera.h").empty());
     EXPECT_FALSE(violation("tests/physics/x_test.cpp", "bench/sphere_rain.h").empty());
     EXPECT_FALSE(violation("bench/x_bench.cpp", "tests/measured.h").empty());
     EXPECT_FALSE(violation("render/png_io.cpp", "../app/scene/scene.h").empty());
