@@ -22,18 +22,10 @@ struct Diagnostics {
 
 Diagnostics diagnose(const Model& model, const State& state);
 
-// One body's share of the sums above (zero for a static body); `tumble plot` draws it per body.
-struct BodyDiagnostics {
-    double kinetic_linear = 0.0;         // 1/2 m v.v, J
-    double kinetic_angular = 0.0;        // 1/2 w . I_w w, J
-    double potential = 0.0;              // - m s g . x, J
-    Vec3 linear_momentum = Vec3::Zero(); // m v
-    Vec3 spin = Vec3::Zero();            // I_w w, about the centre of mass, world
-
-    double kinetic() const { return kinetic_linear + kinetic_angular; }
-    double energy() const { return kinetic() + potential; }
-};
-BodyDiagnostics diagnose_body(const Model& model, const State& state, int body);
+// One body's share: its energies and linear momentum, and its angular momentum about its own
+// centre of mass (the spin I_w w, the L of Euler's equations tau = dL/dt = I dw/dt + w x I w),
+// not about the origin. Zero for a static body.
+Diagnostics diagnose_body(const Model& model, const State& state, int body);
 
 // Spin angular momentum of one body about its centre of mass, I_w w, world frame.
 Vec3 spin_angular_momentum(const Model& model, const State& state, int body);

@@ -9,6 +9,8 @@
 //   6. occlusion   the ground decals of ambient occlusion (occlusion_decals.h)
 //   7. sky         one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
 //                  after the scene so the depth test skips every pixel an object already covers
+//   7b. lines      world-space polylines as ribbons, behind bodies where they pass behind
+//                  (line_ribbons.h), and the canvas (charts) over everything, both multisampled
 //   8. resolve     average each pixel's MSAA samples into the single-sample target
 //   9. overlay     text in a corner (text_overlay.h), after the resolve: it needs no MSAA
 //  10. read back   glReadPixels into the caller's Image, flipped to top-down rows
@@ -21,6 +23,7 @@
 #include "render/draw_list.h"
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
+#include "render/line_ribbons.h"
 #include "render/mesh.h"
 #include "render/occlusion_decals.h"
 #include "render/shader.h"
@@ -185,6 +188,7 @@ struct Renderer::Impl {
     GLuint depth_sampler = 0; // reads the shadow map's raw depths (soft shadows)
     std::optional<OcclusionDecals> decals;
     std::unique_ptr<TextOverlay> overlay; // made on first use
+    std::unique_ptr<LineRibbons> ribbons; // made on first use
     DrawLists lists;
     FrameStats stats;
     GLuint empty_vao = 0; // core profile draws need a vertex array, even one with no attributes
@@ -387,6 +391,14 @@ void Renderer::draw(const SceneView& view, Image& out) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     r.scene_pass(view, m);
     r.sky_pass(view, m);
+    if (!view.lines.strips.empty()) {
+        if (!r.ribbons) r.ribbons = std::make_unique<LineRibbons>();
+        r.ribbons->draw(view.lines, m.view_proj, o.width, o.height);
+    }
+    if (!view.canvas.empty()) {
+        if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.width, o.height);
+        r.overlay->draw(view.canvas, o.width, o.height);
+    }
     if (r.msaa) r.msaa->resolve_into(r.target);
     if (!view.overlay.empty()) {
         if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.width, o.height);

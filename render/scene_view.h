@@ -71,6 +71,54 @@ struct Instance {
     std::int32_t body = -1;
 };
 
+// Lines in the world (trails, curves of a construction): polylines drawn as ribbons that face
+// the camera, `width_px` wide on screen whatever their distance, hidden behind bodies, each point
+// with its own sRGB colour and opacity (a trail fades along its length). Flat arrays: strip s
+// is points[first, first + count).
+struct Polylines {
+    struct Strip {
+        std::uint32_t first = 0, count = 0;
+        float width_px = 2.0f;
+    };
+    std::vector<glm::vec3> points;
+    std::vector<glm::vec4> colors; // one per point
+    std::vector<Strip> strips;
+    void clear() { points.clear(), colors.clear(), strips.clear(); }
+    // Starts a strip; append its points with add().
+    void begin(float width_px) { strips.push_back({std::uint32_t(points.size()), 0, width_px}); }
+    void add(glm::vec3 p, glm::vec4 rgba) {
+        points.push_back(p);
+        colors.push_back(rgba);
+        ++strips.back().count;
+    }
+};
+
+// Flat drawing over the picture (charts), in pixels from the image's top-left corner, sRGB
+// colours with opacity: filled rectangles, then polylines, then text labels, each in order.
+struct Canvas {
+    struct Rect {
+        glm::vec2 min, max;
+        glm::vec4 rgba;
+    };
+    struct Strip {
+        std::uint32_t first = 0, count = 0; // into points
+        glm::vec4 rgba;
+        float width_px = 1.5f;
+    };
+    struct Label {
+        glm::vec2 at; // the baseline's left end (align -1), middle (0) or right end (1)
+        std::string text;
+        glm::vec4 rgba;
+        int align = -1;
+    };
+    std::vector<Rect> rects;
+    std::vector<glm::vec2> points;
+    std::vector<Strip> strips;
+    std::vector<Label> labels;
+    bool empty() const { return rects.empty() && strips.empty() && labels.empty(); }
+    void clear() { rects.clear(), points.clear(), strips.clear(), labels.clear(); }
+};
+
 struct SceneView {
     Camera camera;
     Light light;
@@ -84,6 +132,8 @@ struct SceneView {
     // Text drawn in the top-left corner over a translucent panel, one entry per line (ASCII;
     // other bytes show as '?'). Empty: no overlay.
     std::vector<std::string> overlay;
+    Polylines lines; // trails and constructions, in the world
+    Canvas canvas;   // charts, over the picture
 };
 
 } // namespace tumble::render

@@ -105,23 +105,61 @@ void TextOverlay::draw(const std::vector<std::string>& lines, int width, int hei
     // The panel first, then the glyphs over it (one draw call: order within it is kept).
     quad(margin, margin, margin + 2 * pad + std::ceil(advance * float(columns)),
          margin + 2 * pad + line_height_ * float(lines.size()), -1, -1, -1, -1, kPanelColor);
-    const float inv_w = 1.0f / float(atlas_width_), inv_h = 1.0f / float(atlas_height_);
     float baseline = margin + pad + ascent_;
     for (const std::string& line : lines) {
-        float x = margin + pad;
-        for (char ch : line) {
-            int index = static_cast<unsigned char>(ch) - kFirstChar;
-            if (index < 0 || index >= kCharCount) index = '?' - kFirstChar;
-            const Glyph& g = glyphs_[std::size_t(index)];
-            if (g.x1 > g.x0) { // the space has no pixels
-                const float gx = std::round(x + g.xoff), gy = std::round(baseline + g.yoff);
-                quad(gx, gy, gx + (g.x1 - g.x0), gy + (g.y1 - g.y0), g.x0 * inv_w, g.y0 * inv_h,
-                     g.x1 * inv_w, g.y1 * inv_h, kTextColor);
-            }
-            x += g.advance;
-        }
+        text(margin + pad, baseline, line, kTextColor);
         baseline += line_height_;
     }
+    submit(width, height);
+}
+
+void TextOverlay::text(float x, float baseline, const std::string& line, const float* rgba) {
+    const float inv_w = 1.0f / float(atlas_width_), inv_h = 1.0f / float(atlas_height_);
+    for (char ch : line) {
+        int index = static_cast<unsigned char>(ch) - kFirstChar;
+        if (index < 0 || index >= kCharCount) index = '?' - kFirstChar;
+        const Glyph& g = glyphs_[std::size_t(index)];
+        if (g.x1 > g.x0) { // the space has no pixels
+            const float gx = std::round(x + g.xoff), gy = std::round(baseline + g.yoff);
+            quad(gx, gy, gx + (g.x1 - g.x0), gy + (g.y1 - g.y0), g.x0 * inv_w, g.y0 * inv_h,
+                 g.x1 * inv_w, g.y1 * inv_h, rgba);
+        }
+        x += g.advance;
+    }
+}
+
+// A line segment as a quad `width` pixels wide (two triangles; the joints of a polyline overlap
+// by half a width, which at chart widths does not show).
+void TextOverlay::segment(glm::vec2 a, glm::vec2 b, float width, const float* c) {
+    const glm::vec2 d = b - a;
+    const float length = glm::length(d);
+    if (length <= 0.0f) return;
+    const glm::vec2 along = d / length * (0.5f * width), across(-along.y, along.x);
+    const glm::vec2 p[4] = {a - along - across, b + along - across, b + along + across,
+                            a - along + across};
+    for (int k : {0, 1, 2, 0, 2, 3})
+        vertices_.insert(vertices_.end(), {p[k].x, p[k].y, -1.0f, -1.0f, c[0], c[1], c[2], c[3]});
+}
+
+void TextOverlay::draw(const Canvas& canvas, int width, int height) {
+    if (canvas.empty()) return;
+    vertices_.clear();
+    for (const Canvas::Rect& r : canvas.rects)
+        quad(r.min.x, r.min.y, r.max.x, r.max.y, -1, -1, -1, -1, &r.rgba[0]);
+    for (const Canvas::Strip& s : canvas.strips)
+        for (std::uint32_t i = 1; i < s.count; ++i)
+            segment(canvas.points[s.first + i - 1], canvas.points[s.first + i], s.width_px,
+                    &s.rgba[0]);
+    const float advance = glyphs_[0].advance;
+    for (const Canvas::Label& l : canvas.labels) {
+        const float w = advance * float(l.text.size());
+        const float x = l.align < 0 ? l.at.x : l.align == 0 ? l.at.x - 0.5f * w : l.at.x - w;
+        text(x, l.at.y, l.text, &l.rgba[0]);
+    }
+    submit(width, height);
+}
+
+void TextOverlay::submit(int width, int height) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);

@@ -3,6 +3,7 @@
 // translucent dark panel, drawn with DejaVu Sans Mono (assets/fonts, embedded) rasterised by
 // stb_truetype into a glyph atlas once, when the overlay is made. Monospaced, so numbers that
 // change every frame do not make the text jiggle.
+#include "render/scene_view.h"
 #include "render/shader.h"
 
 #include <GL/gl.h>
@@ -27,6 +28,9 @@ class TextOverlay {
 
     // Draws over whatever is in the bound framebuffer (blending on, depth test off).
     void draw(const std::vector<std::string>& lines, int width, int height);
+    // Draws a canvas (charts) the same way: its rectangles, its polylines as quads of their
+    // width, and its labels in this font.
+    void draw(const Canvas& canvas, int width, int height);
     float pixel_height() const { return pixel_height_; }
 
   private:
@@ -36,6 +40,9 @@ class TextOverlay {
     };
     void quad(float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1,
               const float* rgba);
+    void text(float x, float baseline, const std::string& line, const float* rgba);
+    void segment(glm::vec2 a, glm::vec2 b, float width, const float* rgba);
+    void submit(int width, int height); // draws vertices_
 
     float pixel_height_ = 0;
     int atlas_width_ = 0, atlas_height_ = 0;

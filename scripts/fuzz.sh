@@ -2,7 +2,7 @@
 # Fuzzes the libFuzzer harnesses of tests/fuzz (README there) with ASan + UBSan, clang's libFuzzer.
 #   scripts/fuzz.sh [seconds-per-harness] [harness...]   fuzz each (default 60 s; all three)
 #   scripts/fuzz.sh --merge [harness...]                 fold what fuzzing found into the corpus
-# Harnesses: scene_loader, obj_reader, golden_manifest. Installs clang and its runtimes if missing
+# Harnesses: scene_loader, obj_reader, suite_loader. Installs clang and its runtimes if missing
 # (as scripts/setup.sh installs the rest: run that first), configures and builds the `fuzz` preset.
 # Each harness grows a scratch corpus, build/fuzz/corpus/<harness>, seeded from the committed one,
 # tests/fuzz/corpus/<harness>, which fuzzing never writes. It runs in fork mode, going on after a
@@ -15,16 +15,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all_harnesses=(scene_loader obj_reader golden_manifest)
+all_harnesses=(scene_loader obj_reader suite_loader)
 build=build/fuzz
 
-# Bytes an input may grow to: a scene or a mesh of 64 KB, a manifest of 16 KB.
-max_len() { [ "$1" = golden_manifest ] && echo 16384 || echo 65536; }
+# Bytes an input may grow to: a scene or a mesh of 64 KB, a suite of 16 KB.
+max_len() { [ "$1" = suite_loader ] && echo 16384 || echo 65536; }
 dict() {
   case "$1" in
     scene_loader) echo tests/fuzz/scene.dict ;;
     obj_reader) echo tests/fuzz/obj.dict ;;
-    golden_manifest) echo tests/fuzz/golden.dict ;;
+    suite_loader) echo tests/fuzz/suite.dict ;;
   esac
 }
 

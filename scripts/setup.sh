@@ -24,6 +24,10 @@ packages=(
   # `tumble study` draws its plots by running gnuplot on generated scripts (pngcairo terminal,
   # DejaVu fonts): a small, long-kept Debian package without X (docs/study.md says why).
   gnuplot-nox fonts-dejavu-core
+  # Tests of `tumble test` as CI and people use its outputs: the HTML report opened in a real
+  # browser (headless Chromium: screenshot and DOM), the JUnit file validated against the schema CI
+  # tools read (xmllint), the JSON Schemas checked by a real validator (Python's jsonschema).
+  chromium libxml2-utils python3-jsonschema
 )
 
 missing=()

@@ -45,6 +45,8 @@ struct BenchCase {
     int frames, quick_frames;
     // The effects of issue 14, each on or off (the scene's defaults: soft shadows and AO on).
     bool soft_shadows = true, ambient_occlusion = true, reflections = false;
+    // Issue 16's overlays: charts of the book's energy and w_body, trails, Poinsot's construction.
+    bool teaching = false;
 };
 
 // The targets of issue 5: the default demo at 720p with shadows and anti-aliasing (10 s at
@@ -64,6 +66,9 @@ constexpr BenchCase kCases[] = {
      true},
     {"default-480p-gif", "default", "gif", false, true, true, 854, 480, 240, 60},
     {"default-480p-mp4", "default", "mp4", false, true, true, 854, 480, 240, 60},
+    {"default-720p-base", "default", "mp4", false, true, true, 1280, 720, 240, 60},
+    {"default-720p-teach", "default", "mp4", false, true, true, 1280, 720, 240, 60, true, true,
+     false, true},
 };
 
 // 1000 spheres in a 10 x 10 x 10 lattice above a ground, floating (gravity_scale 0) and each
@@ -109,6 +114,12 @@ PipelineStats run_once(const BenchCase& c, int frames, const std::string& output
     cmd.soft_shadows = c.soft_shadows;
     cmd.ambient_occlusion = c.ambient_occlusion;
     cmd.reflections = c.reflections;
+    if (c.teaching) {
+        cmd.chart = std::vector<std::string>{"energy", "w_body"};
+        cmd.chart_body = "book";
+        cmd.trails = true;
+        cmd.poinsot = "book";
+    }
     apply_render_overrides(cmd, scene);
     scene.duration = double(frames) / scene.render.fps;
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
@@ -156,6 +167,7 @@ std::string options_label(const BenchCase& c) {
     if (c.antialiasing) add("msaa4");
     if (c.ambient_occlusion && !c.preview) add("ao");
     if (c.reflections) add("mirror");
+    if (c.teaching) add("teach");
     return s.empty() ? "plain" : s;
 }
 

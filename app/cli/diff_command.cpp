@@ -44,7 +44,7 @@ Subcommand add_diff_command(CLI::App& app) {
     auto cmd = std::make_shared<DiffCommand>();
     CLI::App* d = app.add_subcommand(
         "diff", "compare two PNG images by decoded pixels (exit 0 match, 1 differ)");
-    // Exact by default; the golden check's budget is in its manifest (README, "Golden images").
+    // Exact by default; a suite's image checks set their budget (docs/regression-testing.md).
     d->option_defaults()->always_capture_default();
     d->add_option("a", cmd->a, "first image")->required();
     d->add_option("b", cmd->b, "second image")->required();

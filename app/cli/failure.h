@@ -6,7 +6,6 @@
 //      context failed, a write or rename failed - anything that is not the user's input
 //   2  bad input: a scene (file and place named), an option, an output name or folder
 //      (io::BadInput and its subclasses, and command-line parse errors)
-//   3  `tumble goldens check`: images differ and the goldens came from another GL renderer
 //   128 + signal  interrupted by Ctrl-C (130) or SIGTERM (143), outputs finished first
 // Commands throw; main() runs each through run_guarded(), the only place that catches.
 #include <exception>
@@ -14,7 +13,7 @@
 
 namespace tumble::app {
 
-enum ExitCode { kOk = 0, kRunFailed = 1, kBadInput = 2, kGoldensFromOtherRenderer = 3 };
+enum ExitCode { kOk = 0, kRunFailed = 1, kBadInput = 2 };
 
 // The exit code of an exception that ended a command: kBadInput for io::BadInput, else
 // kRunFailed.

@@ -68,6 +68,24 @@ void add_switches(CLI::App* r, RenderCommand& render) {
     on_off("axes", render.axes, "each body's x, y, z axes drawn red, green, blue");
     on_off("vectors", render.vectors,
            "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
+    r->add_option("--chart", render.chart,
+                  "strip charts in the frame, one per quantity: " + chart_quantity_names())
+        ->delimiter(',');
+    r->add_option("--chart-body", render.chart_body,
+                  "chart this body's quantities instead of the scene's sums (name or index)");
+    r->add_option("--chart-window", render.chart_window,
+                  "seconds of time the charts show, rolling (default: the whole run)")
+        ->check(CLI::NonNegativeNumber);
+    on_off("trails", render.trails, "the path of each moving body's centre of mass, fading");
+    r->add_option("--trail-seconds", render.trail_seconds, "length of the trails (default 3 s)")
+        ->check(CLI::PositiveNumber);
+    r->add_option("--trail-axis", render.trail_axis,
+                  "also trace the tip of this body axis: x, y or z (implies --trails)");
+    r->add_option("--poinsot", render.poinsot,
+                  "Poinsot's construction for this torque-free body: its energy ellipsoid rolling "
+                  "on the invariable plane, with the polhode and herpolhode");
+    r->add_option("--overlay-body", render.overlay_body,
+                  "the overlay shows this body's energy and momentum instead of the scene's sums");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
     r->add_flag("--overwrite", render.overwrite,
                 "a PNG folder holding frames of an earlier run: remove those frames first "

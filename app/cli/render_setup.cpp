@@ -12,6 +12,45 @@
 
 namespace tumble::app {
 
+namespace {
+
+// --chart, --chart-body, --chart-window, --trails, --trail-axis, --poinsot, --overlay-body.
+void apply_teaching_overrides(const RenderCommand& cmd, Scene& scene) {
+    RenderSettings& rs = scene.render;
+    if (cmd.chart) {
+        rs.chart.clear();
+        for (const std::string& name : *cmd.chart) {
+            const auto q = parse_chart_quantity(name);
+            if (!q) throw SceneError("--chart", name, "expected one of " + chart_quantity_names());
+            rs.chart.push_back(*q);
+        }
+    }
+    if (cmd.chart_body) rs.chart_body = {*cmd.chart_body, "--chart-body"};
+    if (cmd.chart_window) rs.chart_window = *cmd.chart_window;
+    if (cmd.trails) rs.trails = *cmd.trails;
+    if (cmd.trail_seconds) rs.trail_seconds = *cmd.trail_seconds;
+    if (cmd.trail_axis) {
+        const std::string& a = *cmd.trail_axis;
+        if (a != "x" && a != "y" && a != "z")
+            throw SceneError("--trail-axis", a, "expected x, y or z");
+        rs.trail_axis = a[0] - 'x';
+        rs.trails = true;
+    }
+    if (cmd.poinsot) rs.poinsot = {*cmd.poinsot, "--poinsot"};
+    if (cmd.overlay_body) {
+        rs.overlay_body = {*cmd.overlay_body, "--overlay-body"};
+        rs.overlay = true;
+    }
+    std::vector<std::string> names;
+    for (const BodyLook& look : scene.looks) names.push_back(look.name);
+    std::vector<bool> dynamic;
+    for (const physics::BodyDef& b : scene.bodies)
+        dynamic.push_back(b.motion == physics::Motion::Dynamic);
+    resolve_render_bodies(rs, names, dynamic, scene.source);
+}
+
+} // namespace
+
 void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     RenderSettings& rs = scene.render;
     if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing, no extras
@@ -33,6 +72,7 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     if (cmd.overlay) rs.overlay = *cmd.overlay;
     if (cmd.axes) rs.axes = *cmd.axes;
     if (cmd.vectors) rs.vectors = *cmd.vectors;
+    apply_teaching_overrides(cmd, scene);
     if (rs.width < rs.kMinSide || rs.height < rs.kMinSide || rs.width > rs.kMaxWidth ||
         rs.height > rs.kMaxHeight)
         throw SceneError("--width/--height",

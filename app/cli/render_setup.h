@@ -28,6 +28,11 @@ struct RenderCommand {
     bool preview = false; // 640x360 (unless --width/--height), no shadows, AA, AO or reflections
     std::optional<bool> shadows, soft_shadows, ambient_occlusion, reflections, antialiasing,
         overlay, axes, vectors;
+    // Teaching overlays; unset ones keep the scene's.
+    std::optional<std::vector<std::string>> chart; // quantity names
+    std::optional<std::string> chart_body, poinsot, overlay_body, trail_axis;
+    std::optional<double> chart_window, trail_seconds;
+    std::optional<bool> trails;
     bool stats = false;     // print each pipeline stage's rate
     bool overwrite = false; // a frame folder may hold an earlier run's frames: remove them first
     // Integrators drawn side by side, each stepping its own copy of the scene (compare_command).

@@ -8,7 +8,7 @@ namespace {
 // The body's mass-frame state rebuilt from its row (the inverse of physics::body_pose):
 // q_mass = q_body (x) body_from_mass and x_com = x_body + R_body c, so that physics' own
 // definitions (physics/diagnostics.h) apply to it.
-physics::BodyDiagnostics diagnose_row(const physics::Model& m, const StateRow& row) {
+physics::Diagnostics diagnose_row(const physics::Model& m, const StateRow& row) {
     physics::State s;
     const std::size_t n = static_cast<std::size_t>(m.body_count());
     s.x.assign(n, physics::Vec3::Zero());
@@ -94,14 +94,14 @@ std::vector<double> body_values(const Quantity& q, const physics::Model* m, cons
         const physics::Vec3 wb = mass_frame.conjugate() * r.w;
         return {wb.x(), wb.y(), wb.z()};
     }
-    const physics::BodyDiagnostics d = diagnose_row(*m, r);
+    const physics::Diagnostics d = diagnose_row(*m, r);
     if (q.name == "energy" || q.name == "energy_drift") return {d.energy()};
     if (q.name == "kinetic") return {d.kinetic()};
     if (q.name == "ke_trans") return {d.kinetic_linear};
     if (q.name == "ke_rot") return {d.kinetic_angular};
     if (q.name == "potential") return {d.potential};
     if (q.name == "momentum") return with_norm(d.linear_momentum);
-    if (q.name == "L") return with_norm(d.spin);
+    if (q.name == "L") return with_norm(d.angular_momentum); // spin, I_w w
     return {};
 }
 

@@ -4,17 +4,60 @@
 #include "app/view/view_builder.h"
 #include "physics/step.h"
 
+#include <cmath>
+
 namespace tumble::app {
 
 FrameSource::FrameSource(const Scene& scene, const Timeline& timeline, Simulation& sim,
-                         std::int64_t first, std::int64_t last)
+                         std::int64_t first, std::int64_t last,
+                         std::shared_ptr<ChartScale> chart_scale, int canvas_width,
+                         int canvas_height)
     : scene_(scene), timeline_(timeline), sim_(sim), first_(first), last_(last),
       done_(first > last), initial_(physics::diagnose(sim.model, sim.state)),
-      arrows_(sim.model, sim.state) {}
+      arrows_(sim.model, sim.state),
+      canvas_width_(canvas_width > 0 ? canvas_width : scene.render.width),
+      canvas_height_(canvas_height > 0 ? canvas_height : scene.render.height) {
+    const RenderSettings& rs = scene.render;
+    if (rs.overlay_body.index >= 0)
+        overlay_initial_ = physics::diagnose_body(sim.model, sim.state, rs.overlay_body.index);
+    if (!rs.chart.empty()) {
+        ChartSettings c{rs.chart, rs.chart_body.index, rs.chart_body.name, rs.chart_window};
+        chart_ = std::make_unique<ChartHistory>(c, sim.model, sim.state);
+        chart_scale_ =
+            chart_scale ? std::move(chart_scale) : std::make_shared<ChartScale>(rs.chart.size());
+        chart_scale_->include(*chart_, 0);
+    }
+    if (rs.trails) {
+        const auto frames = std::size_t(std::ceil(rs.trail_seconds * timeline.fps)) + 1;
+        trails_ = std::make_unique<Trails>(scene, sim.model, sim.state, frames, rs.trail_axis);
+    }
+    if (rs.poinsot.index >= 0)
+        poinsot_ = std::make_unique<PoinsotConstruction>(sim.model, sim.state, rs.poinsot.index);
+}
+
+void FrameSource::record() {
+    if (chart_) {
+        chart_->record(sim_.model, sim_.state);
+        chart_scale_->include(*chart_, chart_->samples() - 1);
+    }
+    if (trails_) trails_->record(sim_.model, sim_.state);
+    if (poinsot_) poinsot_->record(sim_.model, sim_.state);
+}
 
 void FrameSource::step_one_frame() {
     for (int s = 0; s < timeline_.steps_per_frame; ++s) sim_.step();
     ++k_;
+    record();
+}
+
+void FrameSource::add_teaching(render::SceneView& view) const {
+    view.lines.clear();
+    view.canvas.clear();
+    if (trails_) trails_->add(view.lines);
+    if (poinsot_) poinsot_->add(sim_.model, sim_.state, view.lines);
+    if (chart_)
+        draw_charts(*chart_, *chart_scale_, sim_.state.time(sim_.model), scene_.duration,
+                    canvas_width_, canvas_height_, view.canvas);
 }
 
 bool FrameSource::next(render::SceneView& view) {
@@ -22,14 +65,18 @@ bool FrameSource::next(render::SceneView& view) {
     while (k_ < first_) step_one_frame();
     build_view(scene_, sim_.model, sim_.state, view);
     if (scene_.render.vectors) arrows_.add(sim_.model, sim_.state, view);
+    add_teaching(view);
     if (scene_.render.overlay) {
+        const int body = scene_.render.overlay_body.index;
         OverlayInfo info;
         info.t = sim_.state.time(sim_.model);
         info.step = sim_.state.step;
         info.integrator = physics::integrator_info(sim_.model.integrator).name;
         info.h = sim_.model.dt;
-        info.now = physics::diagnose(sim_.model, sim_.state);
-        info.initial = initial_;
+        info.now = body < 0 ? physics::diagnose(sim_.model, sim_.state)
+                            : physics::diagnose_body(sim_.model, sim_.state, body);
+        info.initial = body < 0 ? initial_ : overlay_initial_;
+        if (body >= 0) info.subject = scene_.render.overlay_body.name;
         overlay_lines(info, view.overlay);
         if (scene_.render.vectors) view.overlay.emplace_back(VectorArrows::legend());
     } else {

@@ -6,20 +6,28 @@
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/scene/scene.h"
+#include "app/view/poinsot.h"
+#include "app/view/strip_chart.h"
+#include "app/view/trails.h"
 #include "app/view/vector_arrows.h"
 #include "physics/diagnostics.h"
 #include "render/scene_view.h"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 namespace tumble::app {
 
 class FrameSource {
   public:
-    // Frames first..last (inclusive) of `sim`, which must be at t = 0. Keeps references.
+    // Frames first..last (inclusive) of `sim`, which must be at t = 0. Keeps references. The
+    // charts' y ranges come from `chart_scale` when given (shared by the tiles of --compare),
+    // else from a scale of its own; they are drawn for an image `canvas_width` x
+    // `canvas_height` (0: the scene's size).
     FrameSource(const Scene& scene, const Timeline& timeline, Simulation& sim, std::int64_t first,
-                std::int64_t last);
+                std::int64_t last, std::shared_ptr<ChartScale> chart_scale = nullptr,
+                int canvas_width = 0, int canvas_height = 0);
 
     // Fills `view` with the next frame (reusing its storage) and steps on to the one after.
     // Returns false when every frame has been produced. Throws physics::DivergenceError.
@@ -36,6 +44,8 @@ class FrameSource {
 
   private:
     void step_one_frame();
+    void record(); // the teaching overlays' sample of this frame
+    void add_teaching(render::SceneView& view) const;
 
     const Scene& scene_;
     const Timeline& timeline_;
@@ -43,7 +53,14 @@ class FrameSource {
     std::int64_t k_ = 0, first_, last_;
     bool done_ = false;
     physics::Diagnostics initial_;
-    VectorArrows arrows_; // drawn when scene.render.vectors
+    VectorArrows arrows_;                  // drawn when scene.render.vectors
+    physics::Diagnostics overlay_initial_; // of render.overlay_body, when given
+    // Teaching overlays, when the scene asks for them.
+    std::unique_ptr<ChartHistory> chart_;
+    std::shared_ptr<ChartScale> chart_scale_;
+    std::unique_ptr<Trails> trails_;
+    std::unique_ptr<PoinsotConstruction> poinsot_;
+    int canvas_width_, canvas_height_;
     Observer observer_;
 };
 

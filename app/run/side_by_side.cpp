@@ -42,8 +42,14 @@ SideBySide::SideBySide(const Scene& scene, const std::vector<physics::Integrator
         lanes_[i].scene.world.integrator = methods[i];
         lanes_[i].sim = make_simulation(lanes_[i].scene, tl.h, threads);
     }
+    // One chart scale for every tile: the same value at the same height in each, so one
+    // method's drift is seen against another's flat line.
+    const auto scale = scene.render.chart.empty()
+                           ? nullptr
+                           : std::make_shared<ChartScale>(scene.render.chart.size());
     for (Lane& lane : lanes_) // after the resize: FrameSource keeps references
-        lane.frames = std::make_unique<FrameSource>(lane.scene, tl, lane.sim, first, last);
+        lane.frames = std::make_unique<FrameSource>(lane.scene, tl, lane.sim, first, last, scale,
+                                                    tile_w_, tile_h_);
     RenderSettings tile = scene.render;
     tile.width = tile_w_;
     tile.height = tile_h_;

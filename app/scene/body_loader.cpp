@@ -1,6 +1,7 @@
 #include "app/scene/body_loader.h"
 
 #include "app/scene/materials.h"
+#include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 #include "app/scene/shape_loader.h"
 
@@ -31,30 +32,32 @@ Mat3 read_inertia(const JsonReader& r) {
     return Mat3(read_vec3(r, "principal moments [I1, I2, I3] in kg m^2").asDiagonal());
 }
 
-void read_mass(JsonReader& r, physics::BodyDef& b) {
+void read_mass(ObjectReader& r, physics::BodyDef& b) {
     auto mass = r.optional("mass");
     auto density = r.optional("density");
     if (mass && density) density->fail("give either \"mass\" or \"density\", not both");
     const double volume = body_volume(b);
     if (mass)
-        b.mass = mass->positive("a positive mass in kilograms");
+        b.mass = mass->number();
     else
-        b.mass = (density ? density->positive("a positive density in kg/m^3") : 1000.0) * volume;
+        b.mass = (density ? density->number() : 1000.0) * volume;
 }
 
 // A plane's orientation may be given as its normal: the rotation taking +z to `normal`.
-physics::Quat plane_orientation(const JsonReader& r) {
-    const Vec3 n = read_vec3(r, "a plane normal [x, y, z]");
+physics::Quat plane_orientation(const FieldValue& r) {
+    const Vec3 n = read_vec3(r);
     if (n.norm() == 0.0) r.fail("expected a non-zero plane normal");
     return physics::Quat::FromTwoVectors(Vec3::UnitZ(), n.normalized());
 }
 
 } // namespace
 
-void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& b, BodyLook& look) {
+void read_body(JsonReader json, int index, ShapeContext& shapes, physics::BodyDef& b,
+               BodyLook& look) {
+    ObjectReader r(json, scene_fields::body());
     look.name = r.has("name") ? r.field("name").string() : "body " + std::to_string(index);
     look.color = kPalette[index % std::size(kPalette)];
-    read_shape(r.field("shape"), shapes, b, look); // app/scene/shape_loader.h
+    read_shape(r.field("shape").reader(), shapes, b, look); // app/scene/shape_loader.h
     const bool plane = b.shape.kind == physics::ShapeKind::Plane;
     if (plane) look.color = kGround; // a floor, not a body: neutral, so every colour shows on it
     b.motion = plane ? physics::Motion::Static : physics::Motion::Dynamic;
@@ -65,21 +68,21 @@ void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& 
     }
     read_mass(r, b);
     if (auto i = r.optional("inertia")) {
-        b.inertia = read_inertia(*i);
+        b.inertia = read_inertia(i->reader());
         if (b.inertia.isZero(0.0)) i->fail("expected positive moments of inertia, got all zeros");
     }
-    if (auto p = r.optional("position"))
-        b.position = read_vec3(*p, "a position [x, y, z] in metres");
-    auto normal = plane ? r.optional("normal") : std::nullopt;
+    if (auto p = r.optional("position")) b.position = read_vec3(*p);
+    auto normal = r.optional("normal");
+    if (normal && !plane)
+        normal->fail("\"normal\" places a plane; give this body an \"orientation\"");
     if (auto o = r.optional("orientation")) {
         if (normal) o->fail("give either \"orientation\" or \"normal\" for a plane, not both");
-        b.orientation = read_orientation(*o);
+        b.orientation = read_orientation(o->reader());
     } else if (normal) {
         b.orientation = plane_orientation(*normal);
     }
-    if (auto v = r.optional("velocity")) b.velocity = read_vec3(*v, "a velocity [x, y, z] in m/s");
-    if (auto w = r.optional("angular_velocity"))
-        b.angular_velocity = read_vec3(*w, "an angular velocity [x, y, z] in rad/s");
+    if (auto v = r.optional("velocity")) b.velocity = read_vec3(*v);
+    if (auto w = r.optional("angular_velocity")) b.angular_velocity = read_vec3(*w);
     if (auto f = r.optional("angular_velocity_frame")) {
         const std::string frame = f->string();
         if (frame == "body")
@@ -87,13 +90,12 @@ void read_body(JsonReader r, int index, ShapeContext& shapes, physics::BodyDef& 
         else if (frame != "world")
             f->fail("expected \"world\" or \"body\", got " + describe_json(f->value()));
     }
-    if (auto g = r.optional("gravity_scale")) b.gravity_scale = g->number("a finite gravity scale");
-    if (auto f = r.optional("force")) b.applied_force = read_vec3(*f, "a force [x, y, z] in N");
-    if (auto t = r.optional("torque"))
-        b.applied_torque = read_vec3(*t, "a torque [x, y, z] in N m");
-    if (auto c = r.optional("color")) look.color = read_color(*c);
+    if (auto g = r.optional("gravity_scale")) b.gravity_scale = g->number();
+    if (auto f = r.optional("force")) b.applied_force = read_vec3(*f);
+    if (auto t = r.optional("torque")) b.applied_torque = read_vec3(*t);
+    if (auto c = r.optional("color")) look.color = read_color(c->reader());
     if (auto m = r.optional("material")) // look, friction, restitution (app/scene/materials.h)
-        look.material = read_material(*m, b.shape.kind, b.material);
+        look.material = read_material(m->reader(), b.shape.kind, b.material);
     r.finish();
 }
 

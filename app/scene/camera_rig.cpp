@@ -1,5 +1,7 @@
 #include "app/scene/camera_rig.h"
 
+#include "app/scene/body_reference.h"
+#include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
 #include <glm/gtc/constants.hpp>
@@ -11,111 +13,103 @@
 namespace tumble::app {
 namespace {
 
-glm::dvec3 read_dvec3(const JsonReader& r, const char* what) {
-    const auto a = r.vec3(what);
+namespace fields = scene_fields;
+
+glm::dvec3 read_dvec3(const FieldValue& v) {
+    const auto a = v.vec3();
     return {a[0], a[1], a[2]};
 }
 
-void read_orbit(JsonReader r, CameraRig& rig) {
+void read_orbit(ObjectReader r, CameraRig& rig) {
     const glm::dvec3 position(rig.base.position), target(rig.base.target);
     rig.center = target;
-    if (auto c = r.optional("center")) rig.center = read_dvec3(*c, "an orbit centre in metres");
+    if (auto c = r.optional("center")) rig.center = read_dvec3(*c);
     const glm::dvec3 from = position - rig.center;
     rig.radius = std::hypot(from.x, from.y);
     rig.height = from.z;
     rig.start_angle = std::atan2(from.y, from.x);
-    if (auto v = r.optional("radius"))
-        rig.radius = v->positive("a positive orbit radius in metres");
-    if (auto v = r.optional("height")) rig.height = v->number("an orbit height in metres");
-    if (auto v = r.optional("start_deg"))
-        rig.start_angle = glm::radians(v->number("a start angle in degrees"));
-    JsonReader period = r.field("period");
-    rig.period = period.number("seconds per turn (negative: clockwise)");
+    if (auto v = r.optional("radius")) rig.radius = v->number();
+    if (auto v = r.optional("height")) rig.height = v->number();
+    if (auto v = r.optional("start_deg")) rig.start_angle = glm::radians(v->number());
+    const FieldValue period = r.field("period");
+    rig.period = period.number();
     if (rig.period == 0.0) period.fail("expected a non-zero number of seconds per turn");
     if (rig.radius == 0.0)
         r.fail("the camera position is straight above the orbit centre: give \"radius\"");
     r.finish();
 }
 
-void read_follow(JsonReader r, CameraRig& rig) {
-    JsonReader body = r.field("body");
+void read_follow(ObjectReader r, CameraRig& rig) {
+    const FieldValue body = r.field("body");
     rig.follow_name =
         body.value().is_number_integer() ? std::to_string(body.value().get<long>()) : body.string();
-    rig.follow_path = body.path();
+    rig.follow_path = body.reader().path();
     rig.offset = glm::dvec3(rig.base.position - rig.base.target);
-    if (auto o = r.optional("offset"))
-        rig.offset = read_dvec3(*o, "a camera offset from the body [x, y, z] in metres");
+    if (auto o = r.optional("offset")) rig.offset = read_dvec3(*o);
     if (auto t = r.optional("track")) rig.track = t->boolean();
     if (!rig.track && glm::length(rig.offset) == 0.0)
         r.fail("the camera offset is zero: it would sit inside the body");
     r.finish();
 }
 
-void read_path(JsonReader r, CameraRig& rig) {
-    if (!r.value().is_array() || r.size() < 2)
-        r.fail("expected an array of at least two keyframes {\"t\", \"position\", \"target\"}");
-    for (std::size_t i = 0; i < r.size(); ++i) {
-        JsonReader k = r.at(i);
+void read_path(const FieldValue& path, CameraRig& rig) {
+    if (!path.value().is_array() || path.value().size() < 2)
+        path.fail("expected an array of at least two keyframes {\"t\", \"position\", \"target\"}");
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        ObjectReader k(path.at(i).reader(), fields::keyframe());
         CameraKey key;
-        key.t = k.field("t").non_negative("a key time in seconds");
-        key.position = read_dvec3(k.field("position"), "a camera position in metres");
-        key.target = read_dvec3(k.field("target"), "a camera target in metres");
+        const FieldValue t = k.field("t");
+        key.t = t.number();
+        key.position = read_dvec3(k.field("position"));
+        key.target = read_dvec3(k.field("target"));
         key.fov_deg = rig.base.fov_y_deg;
-        if (auto f = k.optional("fov_deg")) {
-            key.fov_deg = f->positive("a vertical field of view in degrees");
-            if (key.fov_deg >= 179.0)
-                f->fail("expected a vertical field of view below 179 degrees");
-        }
+        if (auto f = k.optional("fov_deg")) key.fov_deg = f->number();
         if (!rig.keys.empty() && key.t <= rig.keys.back().t)
-            k.field("t").fail("expected key times in increasing order");
+            t.fail("expected key times in increasing order");
         if (key.position == key.target) k.fail("camera position and target coincide");
         k.finish();
         rig.keys.push_back(key);
     }
 }
 
-void read_auto(JsonReader a, CameraRig& rig) {
+void read_auto(const FieldValue& a, CameraRig& rig) {
     rig.mode = CameraRig::Mode::Auto;
     if (a.value().is_boolean()) {
         if (!a.boolean()) rig.mode = CameraRig::Mode::Fixed;
         return;
     }
-    if (auto d = a.optional("direction")) {
-        rig.auto_direction = read_dvec3(*d, "a direction from the target towards the camera");
+    ObjectReader r(a.reader(), fields::camera_auto());
+    if (auto d = r.optional("direction")) {
+        rig.auto_direction = read_dvec3(*d);
         if (glm::length(rig.auto_direction) == 0.0) d->fail("expected a non-zero direction");
     }
-    if (auto m = a.optional("margin"))
-        rig.auto_margin = m->non_negative("a margin >= 0, a fraction of the half-frame");
-    a.finish();
+    if (auto m = r.optional("margin")) rig.auto_margin = m->number();
+    r.finish();
 }
 
 } // namespace
 
-void read_camera_rig(JsonReader r, CameraRig& rig) {
+void read_camera_rig(JsonReader json, CameraRig& rig) {
+    ObjectReader r(json, fields::camera());
     render::Camera& c = rig.base;
     rig.mode = CameraRig::Mode::Fixed; // a camera given; "auto" below may choose it after all
     if (r.has("auto") && (r.has("position") || r.has("target")))
         r.fail("\"auto\" chooses the position and target; give its \"direction\" instead");
-    if (auto p = r.optional("position"))
-        c.position = read_glm_vec3(*p, "a camera position in metres");
-    if (auto t = r.optional("target")) c.target = read_glm_vec3(*t, "a camera target in metres");
-    if (auto u = r.optional("up")) c.up = read_glm_vec3(*u, "an up direction");
-    if (auto f = r.optional("fov_deg")) {
-        const double fov = f->positive("a vertical field of view in degrees");
-        if (fov >= 179.0) f->fail("expected a vertical field of view below 179 degrees");
-        c.fov_y_deg = static_cast<float>(fov);
-    }
+    if (auto p = r.optional("position")) c.position = read_glm_vec3(*p);
+    if (auto t = r.optional("target")) c.target = read_glm_vec3(*t);
+    if (auto u = r.optional("up")) c.up = read_glm_vec3(*u);
+    if (auto f = r.optional("fov_deg")) c.fov_y_deg = static_cast<float>(f->number());
     if (glm::length(c.position - c.target) == 0.0f) r.fail("camera position and target coincide");
     if (int(r.has("orbit")) + int(r.has("follow")) + int(r.has("path")) + int(r.has("auto")) > 1)
         r.fail("give at most one of \"orbit\", \"follow\", \"path\" and \"auto\"");
     if (auto a = r.optional("auto")) read_auto(*a, rig);
     if (auto o = r.optional("orbit")) {
         rig.mode = CameraRig::Mode::Orbit;
-        read_orbit(*o, rig);
+        read_orbit(ObjectReader(o->reader(), fields::orbit()), rig);
     }
     if (auto f = r.optional("follow")) {
         rig.mode = CameraRig::Mode::Follow;
-        read_follow(*f, rig);
+        read_follow(ObjectReader(f->reader(), fields::follow()), rig);
     }
     if (auto p = r.optional("path")) {
         rig.mode = CameraRig::Mode::Path;
@@ -127,29 +121,7 @@ void read_camera_rig(JsonReader r, CameraRig& rig) {
 void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names,
                            const std::string& file) {
     if (rig.mode != CameraRig::Mode::Follow) return;
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == rig.follow_name) {
-            rig.follow_body = int(i);
-            return;
-        }
-    // A body index: digits only (from_chars takes no sign, space or "+" for an unsigned), and
-    // too many of them is out of range, not an exception (std::stoul threw std::out_of_range).
-    const std::string& n = rig.follow_name;
-    std::size_t index = 0;
-    const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), index);
-    if (!n.empty() && ec == std::errc() && end == n.data() + n.size() && index < names.size()) {
-        rig.follow_body = int(index);
-        return;
-    }
-    // Short whatever the scene: the first few names, a long one as an excerpt (describe_json).
-    constexpr std::size_t kListed = 8, kLongName = 60;
-    std::string known;
-    for (std::size_t i = 0; i < std::min(names.size(), kListed); ++i)
-        known +=
-            (i ? ", " : "") + (names[i].size() <= kLongName ? names[i] : describe_json(names[i]));
-    if (names.size() > kListed) known += ", ... (" + std::to_string(names.size()) + " bodies)";
-    throw SceneError(file, rig.follow_path,
-                     "no body named " + describe_json(n) + " to follow (bodies: " + known + ")");
+    rig.follow_body = find_body(names, rig.follow_name, file, rig.follow_path, "follow");
 }
 
 } // namespace tumble::app

@@ -80,6 +80,10 @@ void JsonReader::fail(const std::string& what) const {
     throw SceneError(file_, path_, what);
 }
 
+void JsonReader::fail_at(const std::string& key, const std::string& what) const {
+    throw SceneError(file_, (path_ == "/" ? "" : path_) + "/" + json_pointer_segment(key), what);
+}
+
 JsonReader JsonReader::child(const nlohmann::json& v, const std::string& segment) const {
     return JsonReader(v, file_, (path_ == "/" ? "" : path_) + "/" + segment);
 }

@@ -22,6 +22,8 @@ class JsonReader {
     const std::string& path() const { return path_; }
     const nlohmann::json& value() const { return value_; }
     [[noreturn]] void fail(const std::string& what) const;
+    // The same at this object's key `key` (which need not exist): "<path>/<key>: what".
+    [[noreturn]] void fail_at(const std::string& key, const std::string& what) const;
 
     // Object access. has() marks nothing; field()/optional() mark the key as read.
     bool has(const char* key) const;

@@ -1,5 +1,7 @@
 #include "app/scene/materials.h"
 
+#include "app/scene/scene_fields.h"
+
 #include <iterator>
 
 namespace tumble::app {
@@ -15,17 +17,6 @@ constexpr Preset kPresets[] = {{"plastic", {0.45f, 0.5f, 0.0f}},
                                {"matte", {0.9f, 0.1f, 0.0f}},
                                {"rubber", {0.7f, 0.2f, 0.0f}},
                                {"metal", {0.2f, 1.0f, 1.0f}}};
-
-double unit_interval(const JsonReader& r, const char* what) {
-    const double v = r.number(what);
-    if (v < 0.0 || v > 1.0)
-        r.fail(std::string("expected ") + what + ", got " + describe_json(r.value()));
-    return v;
-}
-
-float unit_knob(const JsonReader& r, const char* what) {
-    return static_cast<float>(unit_interval(r, what));
-}
 
 } // namespace
 
@@ -49,18 +40,17 @@ render::Material read_preset(const JsonReader& r) {
 
 } // namespace
 
-render::Material read_material(JsonReader r, physics::ShapeKind kind, physics::Material& contact) {
-    if (r.value().is_string()) return read_preset(r);
+render::Material read_material(JsonReader json, physics::ShapeKind kind,
+                               physics::Material& contact) {
+    if (json.value().is_string()) return read_preset(json);
+    ObjectReader r(json, scene_fields::material());
     render::Material m = default_material(kind);
-    if (auto p = r.optional("preset")) m = read_preset(*p);
-    if (auto v = r.optional("roughness")) m.roughness = unit_knob(*v, "a roughness in [0, 1]");
-    if (auto v = r.optional("specular")) m.specular = unit_knob(*v, "a specular in [0, 1]");
-    if (auto v = r.optional("metallic")) m.metallic = unit_knob(*v, "a metallic in [0, 1]");
-    if (auto v = r.optional("friction"))
-        contact.friction = v->non_negative("a friction coefficient >= 0");
-    if (auto v = r.optional("restitution"))
-        contact.restitution =
-            unit_interval(*v, "a restitution in [0, 1] (0: no bounce, 1: elastic)");
+    if (auto p = r.optional("preset")) m = read_preset(p->reader());
+    if (auto v = r.optional("roughness")) m.roughness = static_cast<float>(v->number());
+    if (auto v = r.optional("specular")) m.specular = static_cast<float>(v->number());
+    if (auto v = r.optional("metallic")) m.metallic = static_cast<float>(v->number());
+    if (auto v = r.optional("friction")) contact.friction = v->number();
+    if (auto v = r.optional("restitution")) contact.restitution = v->number();
     r.finish();
     return m;
 }

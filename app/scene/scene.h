@@ -2,6 +2,7 @@
 // A scene as loaded from a file: the physics description (world + bodies), and how to draw it.
 // The format is documented field by field in docs/scene-format.md.
 #include "app/scene/camera_rig.h"
+#include "app/scene/chart_quantity.h"
 #include "physics/build.h"
 #include "render/scene_view.h"
 
@@ -40,7 +41,27 @@ struct RenderSettings {
     bool overlay = false; // time, step, integrator, energy, momentum in the top-left corner
     bool axes = false;    // every body's own x, y, z axes as red, green, blue rods
     bool vectors = false; // w and L arrows at each dynamic body (app/view/vector_arrows.h)
+
+    // Teaching overlays (docs/scene-format.md): strip charts, trails, Poinsot's construction,
+    // and the overlay text of one body. A body is named as written (with the JSON path or
+    // option that named it, for errors) and resolved to its index once the bodies are known.
+    struct BodyRef {
+        std::string name, place;
+        int index = -1; // -1: none (the scene's sums, for charts and the overlay)
+    };
+    std::vector<ChartQuantity> chart; // one panel each; empty: no chart
+    BodyRef chart_body, poinsot, overlay_body;
+    double chart_window = 0.0; // s of time shown; 0: the whole run
+    bool trails = false;
+    double trail_seconds = 3.0;
+    int trail_axis = -1; // 0, 1, 2: also trace the tip of this body axis
 };
+
+// Resolves the named bodies of `rs` against the scene's body names (SceneError naming `file` and
+// the place when one is unknown), and checks what each needs: w and w_body charts and Poinsot's
+// construction need a dynamic body.
+void resolve_render_bodies(RenderSettings& rs, const std::vector<std::string>& names,
+                           const std::vector<bool>& dynamic, const std::string& file);
 
 struct Scene {
     std::string source; // file path, or "builtin:<name>" for an embedded scene

@@ -5,6 +5,7 @@
 
 #include "app/scene/input_file.h"
 #include "app/scene/scene_check.h"
+#include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
 #include <algorithm>
@@ -14,15 +15,14 @@ namespace tumble::app {
 namespace {
 
 constexpr int kFormatVersion = 1;
+namespace fields = scene_fields;
 
-void read_world(JsonReader r, Scene& s) {
-    if (auto g = r.optional("gravity"))
-        s.world.gravity = read_vec3(*g, "gravity [x, y, z] in m/s^2");
-    if (auto dt = r.optional("dt")) s.world.dt = dt->positive("a positive time step in seconds");
-    if (auto d = r.optional("duration")) s.duration = d->positive("a positive duration in seconds");
+void read_world(ObjectReader r, Scene& s) {
+    if (auto g = r.optional("gravity")) s.world.gravity = read_vec3(*g);
+    if (auto dt = r.optional("dt")) s.world.dt = dt->number();
+    if (auto d = r.optional("duration")) s.duration = d->number();
     if (auto i = r.optional("integrator")) {
-        const std::string name = i->string();
-        const auto id = physics::integrator_from_name(name);
+        const auto id = physics::integrator_from_name(i->string());
         if (!id)
             i->fail("unknown integrator " + describe_json(i->value()) +
                     "; valid integrators: " + physics::integrator_names());
@@ -30,43 +30,56 @@ void read_world(JsonReader r, Scene& s) {
     }
     physics::ContactSettings& c = s.world.contact; // physics/contact_model.h
     if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
-    if (auto v = r.optional("substeps"))
-        c.substeps = v->integer(0, 64, "contact substeps per step (0: automatic)");
-    if (auto v = r.optional("iterations"))
-        c.iterations = v->integer(1, 64, "contact solve sweeps per substep, 1..64");
-    if (auto v = r.optional("restitution_threshold"))
-        c.restitution_threshold = v->non_negative("an impact speed >= 0 in m/s");
-    if (auto v = r.optional("parallel_min_bodies"))
-        c.parallel_min_bodies =
-            v->integer(0, 1 << 30, "a body count >= 0 from which --threads is used");
+    if (auto v = r.optional("substeps")) c.substeps = v->integer();
+    if (auto v = r.optional("iterations")) c.iterations = v->integer();
+    if (auto v = r.optional("restitution_threshold")) c.restitution_threshold = v->number();
+    if (auto v = r.optional("parallel_min_bodies")) c.parallel_min_bodies = v->integer();
     r.finish();
 }
 
-void read_light(JsonReader r, render::Light& l) {
+void read_light(ObjectReader r, render::Light& l) {
     if (auto d = r.optional("direction")) {
-        l.direction = read_glm_vec3(*d, "the direction the light travels [x, y, z]");
+        l.direction = read_glm_vec3(*d);
         if (glm::length(l.direction) == 0.0f) d->fail("expected a non-zero light direction");
     }
-    if (auto c = r.optional("color")) l.color = read_color(*c);
-    if (auto a = r.optional("ambient"))
-        l.ambient = static_cast<float>(a->non_negative("a non-negative ambient fraction"));
-    if (auto a = r.optional("angle")) {
-        const double deg = a->non_negative("the light's angular diameter in degrees, 0 to 20");
-        if (deg > 20.0) a->fail("expected the light's angular diameter in degrees, 0 to 20");
-        l.angle_deg = static_cast<float>(deg);
-    }
+    if (auto c = r.optional("color")) l.color = read_color(c->reader());
+    if (auto a = r.optional("ambient")) l.ambient = static_cast<float>(a->number());
+    if (auto a = r.optional("angle")) l.angle_deg = static_cast<float>(a->number());
     r.finish();
 }
 
-void read_render(JsonReader r, RenderSettings& rs) {
-    if (auto w = r.optional("width"))
-        rs.width = w->integer(rs.kMinSide, rs.kMaxWidth, "an image width in pixels");
-    if (auto h = r.optional("height"))
-        rs.height = h->integer(rs.kMinSide, rs.kMaxHeight, "an image height in pixels");
-    if (auto f = r.optional("fps")) rs.fps = f->integer(1, 1000, "frames per second");
-    if (auto c = r.optional("camera")) read_camera_rig(*c, rs.camera);
-    if (auto l = r.optional("light")) read_light(*l, rs.light);
-    if (auto b = r.optional("background")) rs.background = read_color(*b);
+// render.chart: {"quantities": ["energy", "w_body"], "body": "book", "window": 5}
+void read_chart(ObjectReader r, RenderSettings& rs) {
+    const FieldValue q = r.field("quantities");
+    rs.chart.clear();
+    for (std::size_t i = 0; i < q.size(); ++i)
+        rs.chart.push_back(*parse_chart_quantity(q.at(i).choice()));
+    if (auto b = r.optional("body")) rs.chart_body = {b->string(), b->reader().path()};
+    if (auto w = r.optional("window")) rs.chart_window = w->number();
+    r.finish();
+}
+
+// render.trails: true, or {"seconds": 3, "axis": "x"}
+void read_trails(FieldValue& v, RenderSettings& rs) {
+    if (v.value().is_boolean()) {
+        rs.trails = v.boolean();
+        return;
+    }
+    ObjectReader r(v.reader(), scene_fields::trails());
+    rs.trails = true;
+    if (auto s = r.optional("seconds")) rs.trail_seconds = s->number();
+    if (auto a = r.optional("axis")) rs.trail_axis = a->choice()[0] - 'x';
+    r.finish();
+}
+
+void read_render(ObjectReader r, RenderSettings& rs) {
+    if (auto w = r.optional("width")) rs.width = w->integer();
+    if (auto h = r.optional("height")) rs.height = h->integer();
+    if (auto f = r.optional("fps")) rs.fps = f->integer();
+    if (auto c = r.optional("camera")) read_camera_rig(c->reader(), rs.camera);
+    if (auto l = r.optional("light"))
+        read_light(ObjectReader(l->reader(), fields::light()), rs.light);
+    if (auto b = r.optional("background")) rs.background = read_color(b->reader());
     if (auto v = r.optional("shadows")) rs.shadows = v->boolean();
     if (auto v = r.optional("soft_shadows")) rs.soft_shadows = v->boolean();
     if (auto v = r.optional("ambient_occlusion")) rs.ambient_occlusion = v->boolean();
@@ -75,6 +88,11 @@ void read_render(JsonReader r, RenderSettings& rs) {
     if (auto v = r.optional("overlay")) rs.overlay = v->boolean();
     if (auto v = r.optional("axes")) rs.axes = v->boolean();
     if (auto v = r.optional("vectors")) rs.vectors = v->boolean();
+    if (auto c = r.optional("chart"))
+        read_chart(ObjectReader(c->reader(), scene_fields::chart()), rs);
+    if (auto t = r.optional("trails")) read_trails(*t, rs);
+    if (auto p = r.optional("poinsot")) rs.poinsot = {p->string(), p->reader().path()};
+    if (auto o = r.optional("overlay_body")) rs.overlay_body = {o->string(), o->reader().path()};
     r.finish();
 }
 
@@ -82,29 +100,36 @@ void read_render(JsonReader r, RenderSettings& rs) {
 
 Scene load_scene(const std::string& text, const std::string& source) {
     const nlohmann::json root = parse_json(text, source);
-    JsonReader r(root, source, "");
-    if (!root.is_object()) r.fail("expected a scene object { \"format_version\": 1, ... }");
-    const int version = r.field("format_version").integer(1, 1000, "the scene format version");
+    if (!root.is_object())
+        JsonReader(root, source, "").fail("expected a scene object { \"format_version\": 1, ... }");
+    ObjectReader r(JsonReader(root, source, ""), fields::scene());
+    const FieldValue format = r.field("format_version");
+    // Read wider than the table's [1, 1], to say which version this tumble reads.
+    const int version = format.reader().integer(1, 1000, "the scene format version");
     if (version != kFormatVersion)
-        r.field("format_version")
-            .fail("this tumble reads format_version " + std::to_string(kFormatVersion) + ", got " +
-                  std::to_string(version));
+        format.fail("this tumble reads format_version " + std::to_string(kFormatVersion) +
+                    ", got " + std::to_string(version));
     Scene s;
     s.source = source;
     if (auto t = r.optional("title")) s.title = t->string();
-    if (auto w = r.optional("world")) read_world(*w, s);
-    if (auto rs = r.optional("render")) read_render(*rs, s.render);
-    JsonReader bodies = r.field("bodies");
+    if (auto w = r.optional("world")) read_world(ObjectReader(w->reader(), fields::world()), s);
+    if (auto rs = r.optional("render"))
+        read_render(ObjectReader(rs->reader(), fields::render()), s.render);
+    const FieldValue bodies = r.field("bodies");
     const std::size_t n = bodies.size();
     s.bodies.resize(n);
     s.looks.resize(n);
     ShapeContext shapes{source, &s.meshes, {}};
     for (std::size_t i = 0; i < n; ++i)
-        read_body(bodies.at(i), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
+        read_body(bodies.at(i).reader(), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
     r.finish();
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);
+    std::vector<bool> dynamic;
+    for (const physics::BodyDef& b : s.bodies)
+        dynamic.push_back(b.motion == physics::Motion::Dynamic);
+    resolve_render_bodies(s.render, names, dynamic, source);
     // Physics validation, mapped to JSON paths; then what is legal but probably unintended.
     const CheckedStart start = build_checked(s, s.world.dt);
     s.warnings = initial_state_warnings(s, start.model, start.state);
@@ -138,8 +163,8 @@ Scene load_scene_argument(const std::string& argument) {
     if (!builtin_only && std::filesystem::is_regular_file(arg, ec))
         return load_scene(read_input_file(arg, "scene"), arg);
     const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
-    const std::string_view builtin =
-        assets::find(file); // "default.json", "lessons/top_precession.json"
+    // Built in by its whole name: "default.json", "lessons/top_precession.json".
+    const std::string_view builtin = assets::find(file);
     if (!builtin.empty()) return load_scene(std::string(builtin), "builtin:" + file);
     std::string names;
     for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;

@@ -1,5 +1,7 @@
 #include "app/scene/scene_values.h"
 
+#include "app/scene/scene_fields.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -8,6 +10,16 @@ namespace tumble::app {
 physics::Vec3 read_vec3(const JsonReader& r, const char* what) {
     const auto a = r.vec3(what);
     return {a[0], a[1], a[2]};
+}
+
+physics::Vec3 read_vec3(const FieldValue& v) {
+    const auto a = v.vec3();
+    return {a[0], a[1], a[2]};
+}
+
+glm::vec3 read_glm_vec3(const FieldValue& v) {
+    const auto a = v.vec3();
+    return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
 }
 
 glm::vec3 read_glm_vec3(const JsonReader& r, const char* what) {
@@ -35,26 +47,31 @@ glm::vec3 read_color(const JsonReader& r) {
 }
 
 physics::Quat read_orientation(JsonReader r) {
-    if (auto q = r.optional("quaternion")) {
-        if (!q->value().is_array() || q->value().size() != 4)
-            q->fail("expected a unit quaternion [w, x, y, z], got " + describe_json(q->value()));
+    namespace fields = scene_fields;
+    if (!r.value().is_object()) // as ObjectReader would say it, before picking a table
+        ObjectReader(r, fields::axis_degrees());
+    if (r.has("quaternion")) {
+        ObjectReader o(r, fields::quaternion());
+        const FieldValue q = o.field("quaternion");
+        if (!q.value().is_array() || q.value().size() != 4)
+            q.fail("expected a unit quaternion [w, x, y, z], got " + describe_json(q.value()));
         double c[4];
-        for (std::size_t k = 0; k < 4; ++k) c[k] = q->at(k).number("a finite number");
+        for (std::size_t k = 0; k < 4; ++k) c[k] = q.at(k).number();
         const physics::Quat out(c[0], c[1], c[2], c[3]);
         if (std::abs(out.norm() - 1.0) > 1e-3)
-            q->fail("expected a unit quaternion [w, x, y, z], got norm " +
-                    std::to_string(out.norm()));
-        r.finish();
+            q.fail("expected a unit quaternion [w, x, y, z], got norm " +
+                   std::to_string(out.norm()));
+        o.finish();
         return out.normalized();
     }
-    const physics::Vec3 axis = read_vec3(r.field("axis"), "a rotation axis [x, y, z]");
-    if (axis.norm() == 0.0) r.field("axis").fail("expected a non-zero rotation axis");
-    double angle = 0.0;
-    if (auto deg = r.optional("angle_deg"))
-        angle = deg->number("an angle in degrees") * std::numbers::pi / 180.0;
-    else
-        angle = r.field("angle_rad").number("an angle in radians");
-    r.finish();
+    const bool degrees = r.has("angle_deg");
+    ObjectReader o(r, degrees ? fields::axis_degrees() : fields::axis_radians());
+    const FieldValue axis_field = o.field("axis");
+    const physics::Vec3 axis = read_vec3(axis_field);
+    if (axis.norm() == 0.0) axis_field.fail("expected a non-zero rotation axis");
+    const double angle = degrees ? o.field("angle_deg").number() * std::numbers::pi / 180.0
+                                 : o.field("angle_rad").number();
+    o.finish();
     return physics::Quat(Eigen::AngleAxisd(angle, axis.normalized()));
 }
 

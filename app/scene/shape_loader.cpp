@@ -1,6 +1,7 @@
 #include "app/scene/shape_loader.h"
 
 #include "app/scene/obj_lines.h"
+#include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
 namespace tumble::app {
@@ -9,9 +10,9 @@ namespace {
 using physics::Shape;
 using physics::Vec3;
 
-Shape read_box(JsonReader& r) {
-    const JsonReader size = r.field("size");
-    const Vec3 full = read_vec3(size, "box edge lengths [x, y, z] in metres");
+Shape read_box(ObjectReader& r) {
+    const FieldValue size = r.field("size");
+    const Vec3 full = read_vec3(size);
     if (full.minCoeff() <= 0.0)
         size.fail("expected positive box edge lengths, got " + describe_json(size.value()));
     return Shape::box(0.5 * full);
@@ -20,11 +21,9 @@ Shape read_box(JsonReader& r) {
 // {"type": "capsule", "radius": r, "length": L}: L is the length of the straight part, the
 // distance between the centres of the two end hemispheres (the whole capsule is L + 2 r long),
 // along the body's z axis.
-Shape read_capsule(JsonReader& r) {
-    const double radius = r.field("radius").positive("a positive capsule radius in metres");
-    const double length = r.field("length").positive(
-        "a positive length in metres of the capsule's straight part, between the centres of its "
-        "end caps (a capsule of length 0 is a sphere: use \"sphere\")");
+Shape read_capsule(ObjectReader& r) {
+    const double radius = r.field("radius").number();
+    const double length = r.field("length").number();
     return Shape::capsule(radius, 0.5 * length);
 }
 
@@ -52,29 +51,36 @@ const std::pair<ObjMesh, std::uint32_t>& load_mesh(JsonReader file, double scale
 
 } // namespace
 
-void read_shape(JsonReader r, ShapeContext& c, physics::BodyDef& b, BodyLook& look) {
+// The table of the shape's type, or SceneError naming the types.
+static const Table& shape_table(JsonReader& r) {
+    namespace fields = scene_fields;
     const std::string type = r.field("type").string();
+    for (const Table* t :
+         {&fields::sphere(), &fields::box(), &fields::plane(), &fields::capsule(), &fields::mesh()})
+        if (t->id == type) return *t;
+    const JsonReader t = r.field("type");
+    t.fail("unknown shape " + describe_json(t.value()) +
+           "; expected one of: sphere, box, plane, capsule, mesh");
+}
+
+void read_shape(JsonReader json, ShapeContext& c, physics::BodyDef& b, BodyLook& look) {
+    ObjectReader r(json, shape_table(json));
+    const std::string& type = r.table().id;
     if (type == "sphere") {
-        b.shape = Shape::sphere(r.field("radius").positive("a positive radius in metres"));
+        b.shape = Shape::sphere(r.field("radius").number());
     } else if (type == "box") {
         b.shape = read_box(r);
     } else if (type == "plane") {
         b.shape = Shape::plane();
-        if (auto e = r.optional("extent"))
-            look.plane_extent = static_cast<float>(e->positive("a positive drawn size in metres"));
+        if (auto e = r.optional("extent")) look.plane_extent = static_cast<float>(e->number());
     } else if (type == "capsule") {
         b.shape = read_capsule(r);
-    } else if (type == "mesh") {
-        const double scale =
-            r.has("scale") ? r.field("scale").positive("a positive scale factor") : 1.0;
-        const auto& [mesh, id] = load_mesh(r.field("file"), scale, c);
+    } else {
+        const double scale = r.has("scale") ? r.field("scale").number() : 1.0;
+        const auto& [mesh, id] = load_mesh(r.field("file").reader(), scale, c);
         b.shape = Shape::mesh();
         b.mesh = mesh.solid;
         look.mesh_id = id;
-    } else {
-        const JsonReader t = r.field("type");
-        t.fail("unknown shape " + describe_json(t.value()) +
-               "; expected one of: sphere, box, plane, capsule, mesh");
     }
     r.finish();
 }

@@ -16,7 +16,7 @@ void set_line(std::string& line, const char* format, Args... args) {
 } // namespace
 
 void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
-    lines.resize(5);
+    lines.resize(o.subject.empty() ? 5 : 6);
     const double e0 = o.initial.energy(), e = o.now.energy();
     // Relative drift when the energy is not near zero, absolute otherwise.
     const bool relative = std::abs(e0) > 1e-12;
@@ -33,6 +33,9 @@ void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
     const physics::Vec3& l = o.now.angular_momentum;
     set_line(lines[3], "p %#+10.3g %#+10.3g %#+10.3g kg m/s", p.x(), p.y(), p.z());
     set_line(lines[4], "L %#+10.3g %#+10.3g %#+10.3g kg m^2/s", l.x(), l.y(), l.z());
+    if (!o.subject.empty())
+        set_line(lines[5], "(E, p of body \"%s\"; L its spin about its centre)",
+                 std::string(o.subject).c_str());
 }
 
 } // namespace tumble::app

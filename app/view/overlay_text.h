@@ -18,6 +18,9 @@ struct OverlayInfo {
     std::string_view integrator;
     double h = 0.0; // s
     physics::Diagnostics now, initial;
+    // Whose numbers they are: empty for the scene's sums (L about the origin), else a body's
+    // name (its own energy, momentum and spin L about its centre of mass).
+    std::string_view subject;
 };
 
 // Replaces `lines` (reusing their storage) with the overlay text.

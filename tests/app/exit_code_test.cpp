@@ -61,7 +61,8 @@ TEST(ExitCodes, BadInputExitsTwoInEverySubcommand) {
         {"simulate s.json -o s.json/deeper/s.csv", 2, "'s.json/deeper': Not a directory"},
         {"explain nosuch.json", 2, "nosuch.json: file: no such file"},
         {"explain s.json --dt -1", 2, "--dt"},
-        {"goldens check nosuch.json", 2, "nosuch.json"},
+        {"test nosuch.json", 2, "nosuch.json"},
+        {"test s.json", 2, "s.json: /: this is a scene file, not a suite"},
         {"diff nosuch.png other.png", 2, "nosuch.png"},
         {"study --quick -q -o s.json/study", 2, "'s.json/study': Not a directory"},
         {"bench-render nosuch-case", 2, "unknown benchmark case"},
@@ -106,6 +107,8 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
     ASSERT_EQ(run_tumble(dir, "render --frame 99 --width 320 --height 180 -o b.png -q").exit_code,
               0);
     ASSERT_EQ(run_tumble(dir, "simulate --duration 1 -o run.csv -q").exit_code, 0);
+    write_text(dir / "suite.json", R"({"format_version": 1, "scenes": [{"scene": "tossed_book",
+        "images": [{"frames": [0]}]}]})");
     // 4 blocks (2 KiB in dash's 512-byte blocks): far less than any of these outputs.
     const auto run_full = [&](const std::string& args) {
         return run_shell(dir, "trap '' XFSZ; ulimit -f 4; exec \"$TUMBLE\" " + args);
@@ -122,6 +125,8 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
              {"diff a.png b.png --max-different 0 -o d.png", "d.png", "'d.png'"},
              {"bench-render default-preview --quick --repeats 1 --csv r.csv", "r.csv", "bench.mp4"},
              {"plot run.csv --quantity energy -q -o p.png", "p.png", "'p.png'"},
+             {"test suite.json --report rep", "rep/index.html", "'rep/images/tossed_book_0000."},
+             {"test suite.json --update", "tossed_book_0000.png", "'tossed_book_0000.png'"},
          }) {
         SCOPED_TRACE(c.args);
         const CliResult r = run_full(c.args);

@@ -36,9 +36,8 @@ TEST(MemoryBounds, InputFilesOver256MiBAreRefusedUnread) {
     sparse_file(dir / "big.json", (std::uintmax_t{256} << 20) + 1);
     expect_refused(run_bounded(dir, "explain big.json"),
                    "big.json: file: the scene is 256.0 MiB; Tumble reads at most 256.0 MiB");
-    sparse_file(dir / "goldens.json", std::uintmax_t{300} << 20);
-    expect_refused(run_bounded(dir, "goldens check goldens.json"),
-                   "the golden manifest is 300.0 MiB");
+    sparse_file(dir / "suite.json", std::uintmax_t{300} << 20);
+    expect_refused(run_bounded(dir, "test suite.json"), "the suite is 300.0 MiB");
     sparse_file(dir / "huge.obj", std::uintmax_t{1} << 30);
     write_text(dir / "mesh.json", R"({"format_version": 1, "bodies": [
         {"name": "m", "shape": {"type": "mesh", "file": "huge.obj"}}]})");

@@ -1,0 +1,65 @@
+#include "app/view/trails.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::app {
+namespace {
+
+glm::vec3 to_glm(const physics::Vec3& v) {
+    return {float(v.x()), float(v.y()), float(v.z())};
+}
+
+} // namespace
+
+Trails::Trails(const Scene& scene, const physics::Model& model, const physics::State& initial,
+               std::size_t frames, int axis)
+    : axis_(axis), capacity_(std::max<std::size_t>(frames, 2)) {
+    for (int b : model.dynamic_bodies) {
+        bodies_.push_back(b);
+        colours_.push_back(scene.looks[std::size_t(b)].color);
+        // A body's size, 1.7 sqrt(I_max / m) (as the vector arrows): its radius for a sphere,
+        // its half-diagonal for a box; the axis tip sits 1.2 sizes out.
+        const double i_max = model.inertia[std::size_t(b)].maxCoeff();
+        reach_.push_back(float(1.2 * 1.7 * std::sqrt(i_max / model.mass[std::size_t(b)])));
+    }
+    centres_.resize(capacity_ * bodies_.size());
+    tips_.resize(axis_ >= 0 ? capacity_ * bodies_.size() : 0);
+    record(model, initial);
+}
+
+void Trails::record(const physics::Model& model, const physics::State& state) {
+    const std::size_t n = bodies_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const int b = bodies_[i];
+        centres_[head_ * n + i] = to_glm(state.x[std::size_t(b)]);
+        if (axis_ >= 0) {
+            const physics::Quat r = physics::body_pose(model, state, b).orientation;
+            const physics::Vec3 e = r * physics::Vec3::Unit(axis_);
+            tips_[head_ * n + i] = to_glm(state.x[std::size_t(b)] + double(reach_[i]) * e);
+        }
+    }
+    head_ = (head_ + 1) % capacity_;
+    count_ = std::min(count_ + 1, capacity_);
+}
+
+void Trails::add(render::Polylines& lines) const {
+    const std::size_t n = bodies_.size();
+    const std::size_t oldest = (head_ + capacity_ - count_) % capacity_;
+    auto strip = [&](const std::vector<glm::vec3>& points, std::size_t i, glm::vec3 colour,
+                     float width) {
+        lines.begin(width);
+        for (std::size_t k = 0; k < count_; ++k) {
+            const std::size_t slot = (oldest + k) % capacity_;
+            // Opacity rises from 0 at the oldest point to 0.9 at the newest.
+            const float age = count_ > 1 ? float(k) / float(count_ - 1) : 1.0f;
+            lines.add(points[slot * n + i], glm::vec4(colour, 0.9f * age));
+        }
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        strip(centres_, i, colours_[i], 3.0f);
+        if (axis_ >= 0) strip(tips_, i, glm::mix(colours_[i], glm::vec3(1.0f), 0.5f), 2.0f);
+    }
+}
+
+} // namespace tumble::app
