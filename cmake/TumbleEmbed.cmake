@@ -1,13 +1,15 @@
-# tumble_embed(<out.cpp> <namespace> <file>...)
+# tumble_embed(<out.cpp> <namespace> <file>... [ROOTS <dir>...])
 # Generates a C++ source that holds each file's bytes, so the binary needs no asset files at run
-# time. Each file becomes `std::string_view <namespace>::<symbol>()`, where <symbol> is the file
-# name with every non-alphanumeric character replaced by '_'. Regenerated when an input changes.
+# time, looked up by name (cmake/embed_files.cmake). A file's name is its path relative to the
+# first of ROOTS that contains it ("lessons/intermediate_axis.json" under assets/scenes), else its
+# file name. Regenerated when an input changes.
 function(tumble_embed out namespace)
-  set(inputs ${ARGN})
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "ROOTS")
+  set(inputs ${arg_UNPARSED_ARGUMENTS})
   add_custom_command(
     OUTPUT ${out}
     COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DNAMESPACE=${namespace} "-DINPUTS=${inputs}"
-            -P ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
+            "-DROOTS=${arg_ROOTS}" -P ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
     DEPENDS ${inputs} ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
     COMMENT "Embedding ${namespace} assets"
     VERBATIM)

@@ -9,6 +9,10 @@ top.obj  a spinning top: a solid of revolution about z whose profile (r, z) is c
          points and friction slowly brakes the spin), a cone widening to a 4 cm rim, a short band,
          then a shallower cone up to a flat crown. Mass properties come from the triangles
          (physics/mesh.h), centre of mass about 2.7 cm above the tip.
+sharp_top.obj  the lessons' top (docs/lessons/05-top-precession.md): the same solid with a point
+         tip, so that it turns about a fixed point as the textbook's heavy top does; the same mesh
+         as physics/scenes' sharp_top_mesh(48), which tests/physics/top_precession_test.cpp
+         measures against its mass properties by slices.
 Faces are wound counter-clockwise seen from outside; indices are 1-based (OBJ).
 """
 import math
@@ -46,6 +50,32 @@ def revolve(profile, segments):
     return verts, tris
 
 
+def revolve_with_apex(rings, segments):
+    """Closed solid of revolution with a point tip at the origin below the rings [(r, z), ...]
+    and a flat crown on the last: the vertices and faces of sharp_top_mesh() in
+    physics/scenes/stability_scenes.cpp, in the same order."""
+    verts = [(0.0, 0.0, 0.0)]
+    for r, z in rings:
+        for k in range(segments):
+            a = 2.0 * math.pi * k / segments
+            verts.append((r * math.cos(a), r * math.sin(a), z))
+    crown = len(verts)
+    verts.append((0.0, 0.0, rings[-1][1]))
+
+    def ring(i, k):
+        return 1 + i * segments + (k % segments)
+
+    tris = []
+    last = len(rings) - 1
+    for k in range(segments):
+        tris.append((0, ring(0, k + 1), ring(0, k)))
+        for i in range(last):
+            tris.append((ring(i, k), ring(i, k + 1), ring(i + 1, k + 1)))
+            tris.append((ring(i, k), ring(i + 1, k + 1), ring(i + 1, k)))
+        tris.append((crown, ring(last, k), ring(last, k + 1)))
+    return verts, tris
+
+
 def write_obj(name, comment, verts, tris):
     path = os.path.join(OUT, name)
     with open(path, "w") as f:
@@ -62,6 +92,8 @@ def main():
     top_profile = [(0.0015, 0.0), (0.040, 0.030), (0.040, 0.036), (0.008, 0.056)]
     write_obj("top.obj", "Spinning top: tip at the origin, axis +z, 4 cm rim radius",
               *revolve(top_profile, 48))
+    write_obj("sharp_top.obj", "Spinning top with a point tip at the origin, axis +z, 4 cm rim",
+              *revolve_with_apex(top_profile[1:], 48))
 
 
 if __name__ == "__main__":

@@ -1,20 +1,24 @@
-// `tumble scenes`: the built-in scenes with their titles.
+// `tumble scenes`: the built-in scenes with their titles (the lessons' scenes last).
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/scene/scene.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tumble::app {
 namespace {
 
 int run_list_scenes() {
-    for (const std::string& name : builtin_scene_names()) {
+    const std::vector<std::string> names = builtin_scene_names();
+    int width = 20; // the longest name ("lessons/intermediate_axis") sets the column
+    for (const std::string& name : names) width = std::max(width, static_cast<int>(name.size()));
+    for (const std::string& name : names) {
         try {
             const Scene s = load_scene_argument(name);
-            std::printf("%-20s %s\n", name.c_str(), s.title.c_str());
+            std::printf("%-*s %s\n", width, name.c_str(), s.title.c_str());
         } catch (const std::exception& e) { // list the others all the same
-            std::printf("%-20s (invalid: %s)\n", name.c_str(), e.what());
+            std::printf("%-*s (invalid: %s)\n", width, name.c_str(), e.what());
         }
     }
     return kOk;

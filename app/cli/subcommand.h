@@ -23,6 +23,7 @@ Subcommand add_test_command(CLI::App& app);
 Subcommand add_schema_command(CLI::App& app);
 Subcommand add_diff_command(CLI::App& app);
 Subcommand add_study_command(CLI::App& app);
+Subcommand add_plot_command(CLI::App& app);
 Subcommand add_version_flag(CLI::App& app); // tumble --version
 
 } // namespace tumble::app

@@ -143,7 +143,12 @@ Trajectory read_trajectory(const std::filesystem::path& states,
         return r;
     });
     if (diagnostics.empty()) return out;
-    out.diagnostics = read_table<DiagnosticsRow>(diagnostics, kDiagnosticsHeader, [](Fields& f) {
+    out.diagnostics = read_diagnostics(diagnostics);
+    return out;
+}
+
+std::vector<DiagnosticsRow> read_diagnostics(const std::filesystem::path& diagnostics) {
+    return read_table<DiagnosticsRow>(diagnostics, kDiagnosticsHeader, [](Fields& f) {
         DiagnosticsRow r;
         r.step = f.integer();
         r.t = f.number();
@@ -154,7 +159,6 @@ Trajectory read_trajectory(const std::filesystem::path& states,
         r.l = f.vec3();
         return r;
     });
-    return out;
 }
 
 } // namespace tumble::app

@@ -18,4 +18,7 @@ struct Trajectory {
 Trajectory read_trajectory(const std::filesystem::path& states,
                            const std::filesystem::path& diagnostics = {});
 
+// The diagnostics table alone (`tumble plot` of scene totals, whose states it need not read).
+std::vector<DiagnosticsRow> read_diagnostics(const std::filesystem::path& diagnostics);
+
 } // namespace tumble::app

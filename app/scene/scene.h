@@ -83,14 +83,16 @@ struct Scene {
 Scene load_scene(const std::string& text, const std::string& source);
 
 // Resolves a scene argument: an existing file path, or the name of a built-in scene ("default",
-// "default.json"). An empty argument means the built-in default scene. Throws SceneError.
+// "default.json", "lessons/intermediate_axis"). An empty argument means the built-in default
+// scene. Throws SceneError.
 Scene load_scene_argument(const std::string& argument);
 
 // The scene's short name: "default" for the built-in "builtin:default.json", "flip" for the file
 // "shots/flip.json"; "tumble" for a scene without a source. Default output names start with it.
 std::string scene_name(const Scene& scene);
 
-// Names of the built-in scenes (without .json).
+// Names of the built-in scenes (without .json): assets/scenes/ first, then its folders' scenes
+// named with the folder ("lessons/intermediate_axis").
 std::vector<std::string> builtin_scene_names();
 
 } // namespace tumble::app

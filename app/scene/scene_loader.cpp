@@ -8,6 +8,7 @@
 #include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace tumble::app {
@@ -91,8 +92,7 @@ void read_render(ObjectReader r, RenderSettings& rs) {
         read_chart(ObjectReader(c->reader(), scene_fields::chart()), rs);
     if (auto t = r.optional("trails")) read_trails(*t, rs);
     if (auto p = r.optional("poinsot")) rs.poinsot = {p->string(), p->reader().path()};
-    if (auto o = r.optional("overlay_body"))
-        rs.overlay_body = {o->string(), o->reader().path()};
+    if (auto o = r.optional("overlay_body")) rs.overlay_body = {o->string(), o->reader().path()};
     r.finish();
 }
 
@@ -149,6 +149,8 @@ std::vector<std::string> builtin_scene_names() {
         std::string n(name);
         if (n.size() > 5 && n.ends_with(".json")) out.push_back(n.substr(0, n.size() - 5));
     }
+    std::stable_partition(out.begin(), out.end(),
+                          [](const std::string& n) { return n.find('/') == std::string::npos; });
     return out;
 }
 
@@ -161,9 +163,9 @@ Scene load_scene_argument(const std::string& argument) {
     if (!builtin_only && std::filesystem::is_regular_file(arg, ec))
         return load_scene(read_input_file(arg, "scene"), arg);
     const std::string file = arg.ends_with(".json") ? arg : arg + ".json";
-    const std::string_view builtin = assets::find(std::filesystem::path(file).filename().string());
-    if (!builtin.empty() && arg.find('/') == std::string::npos)
-        return load_scene(std::string(builtin), "builtin:" + file);
+    // Built in by its whole name: "default.json", "lessons/top_precession.json".
+    const std::string_view builtin = assets::find(file);
+    if (!builtin.empty()) return load_scene(std::string(builtin), "builtin:" + file);
     std::string names;
     for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
     throw SceneError(arg, "file",

@@ -1,9 +1,5 @@
-// gnuplot was chosen over Tumble's own renderer for the plots: log axes, tick labels, legends and
-// text are what a plotting program already does well, and the renderer has no text or 2D layer
-// (issue 6 allows either). gnuplot-nox is a small, long-maintained Debian package without X; its
-// pngcairo terminal draws anti-aliased PNGs with the DejaVu fonts.
+// The study's figures: work against precision, error against step, energy, stability maps.
 #include "app/study/plots.h"
-#include "io/atomic_file.h"
 #include "physics/integrator.h"
 
 #include <algorithm>
@@ -11,51 +7,15 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace tumble::app::study {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-std::string read_all(const fs::path& p) {
-    std::FILE* f = std::fopen(p.c_str(), "rb");
-    std::string s;
-    if (!f) return s;
-    std::array<char, 4096> buf;
-    for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), f)) > 0;)
-        s.append(buf.data(), n);
-    std::fclose(f);
-    return s;
-}
-
-// Writes dir/plots/<name>.gp and runs it; gnuplot draws to a temporary name that is renamed to
-// <name>.png once complete.
+// Draws dir/plots/<name>.png from `body`, its script kept beside it (app/study/gnuplot.h).
 void draw(const fs::path& dir, const std::string& name, const std::string& body) {
-    const fs::path plots = dir / "plots";
-    fs::create_directories(plots);
-    const fs::path script = plots / (name + ".gp"), png = plots / (name + ".png");
-    write_text_atomic(script, "# drawn by `tumble study`; redraw with: gnuplot " + name +
-                                  ".gp\nset terminal pngcairo size 900,560 font \"DejaVu "
-                                  "Sans,10\"\nif (!exists(\"out\")) out = \"" +
-                                  name + ".png\"\nset output out\n" + body);
-    io::AtomicFile out(png);
-    const fs::path log = plots / ("." + name + ".log");
-    const std::string cmd = "gnuplot -e " +
-                            shell_quote("out=\"" + out.temp_path().string() + "\"") + " " +
-                            shell_quote(script.string()) + " 2> " + shell_quote(log.string());
-    const int status = std::system(cmd.c_str());
-    const std::string messages = read_all(log);
-    fs::remove(log);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw PlotError("gnuplot failed on " + script.string() + ":\n" + messages);
-    out.commit();
+    draw_with_gnuplot({dir / "plots" / (name + ".png"), "tumble study", 900, 560, body, {}});
 }
 
 std::string num(double v) {
@@ -212,22 +172,6 @@ void contact_plots(const fs::path& dir, const Results& r) {
 }
 
 } // namespace
-
-std::string gnuplot_version() {
-    std::FILE* p = popen("gnuplot --version 2>/dev/null", "r");
-    std::string line;
-    if (p) {
-        std::array<char, 256> buf;
-        if (std::fgets(buf.data(), buf.size(), p)) line = buf.data();
-        const int status = pclose(p);
-        if (status != 0) line.clear();
-    }
-    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-    if (line.empty())
-        throw PlotError("gnuplot not found: the study draws its plots with gnuplot; install the "
-                        "Debian package gnuplot-nox (scripts/setup.sh does)");
-    return line;
-}
 
 std::string work_precision_plot(const std::string& problem) {
     return "plots/work-precision-" + problem + ".png";

@@ -1,23 +1,15 @@
 #pragma once
-// The study's PNG plots, drawn by gnuplot (Debian's gnuplot-nox, pngcairo terminal) run as a
-// subprocess on a generated script with the data inline. Each plot keeps its script beside the
-// PNG (plots/<name>.gp), so a user can restyle and redraw it with `gnuplot <name>.gp`.
+// The study's PNG plots, drawn by gnuplot (app/study/gnuplot.h) on generated scripts with the
+// data inline. Each plot keeps its script beside the PNG (plots/<name>.gp), so a user can restyle
+// and redraw it with `gnuplot <name>.gp`.
+#include "app/study/gnuplot.h"
 #include "app/study/report.h"
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace tumble::app::study {
-
-struct PlotError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-// gnuplot's version line ("gnuplot 5.4 patchlevel 4"). Throws PlotError when gnuplot cannot be
-// run, naming the package to install.
-std::string gnuplot_version();
 
 // PNG paths relative to the output folder, as the report links them.
 std::string work_precision_plot(const std::string& problem);

@@ -66,6 +66,8 @@ TEST(ExitCodes, BadInputExitsTwoInEverySubcommand) {
         {"diff nosuch.png other.png", 2, "nosuch.png"},
         {"study --quick -q -o s.json/study", 2, "'s.json/study': Not a directory"},
         {"bench-render nosuch-case", 2, "unknown benchmark case"},
+        {"plot nosuch.csv --quantity energy -o f.png", 2, "nosuch.diagnostics.csv: file: no such"},
+        {"plot nosuch.csv --quantity w --bodies a -o f.pdf", 2, "ending in .png or .svg"},
     });
 }
 
@@ -104,6 +106,7 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
               0);
     ASSERT_EQ(run_tumble(dir, "render --frame 99 --width 320 --height 180 -o b.png -q").exit_code,
               0);
+    ASSERT_EQ(run_tumble(dir, "simulate --duration 1 -o run.csv -q").exit_code, 0);
     write_text(dir / "suite.json", R"({"format_version": 1, "scenes": [{"scene": "tossed_book",
         "images": [{"frames": [0]}]}]})");
     // 4 blocks (2 KiB in dash's 512-byte blocks): far less than any of these outputs.
@@ -121,6 +124,7 @@ TEST(ExitCodes, AFullDiskExitsOneInEverySubcommandThatWrites) {
              {"simulate -o s.csv -q", "s.csv", "s.csv"},
              {"diff a.png b.png --max-different 0 -o d.png", "d.png", "'d.png'"},
              {"bench-render default-preview --quick --repeats 1 --csv r.csv", "r.csv", "bench.mp4"},
+             {"plot run.csv --quantity energy -q -o p.png", "p.png", "'p.png'"},
              {"test suite.json --report rep", "rep/index.html", "'rep/images/tossed_book_0000."},
              {"test suite.json --update", "tossed_book_0000.png", "'tossed_book_0000.png'"},
          }) {

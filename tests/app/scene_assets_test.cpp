@@ -33,11 +33,13 @@ Scene load_file(const fs::path& p) {
 TEST(SceneAssets, EveryFileLoadsFromDiskAndEmbeddedWithoutWarnings) {
     std::vector<std::string> builtin = app::builtin_scene_names();
     int count = 0;
-    for (const auto& entry : fs::directory_iterator(scenes_dir())) {
+    for (const auto& entry : fs::recursive_directory_iterator(scenes_dir())) {
         if (entry.path().extension() != ".json") continue;
         SCOPED_TRACE(entry.path().string());
         ++count;
-        const std::string name = entry.path().stem().string();
+        // A scene in a folder is named with it: lessons/intermediate_axis.
+        const std::string name =
+            fs::relative(entry.path(), scenes_dir()).replace_extension().generic_string();
         Scene from_disk, embedded;
         ASSERT_NO_THROW(from_disk = load_file(entry.path()));
         ASSERT_NO_THROW(embedded = app::load_scene_argument(name));
@@ -48,6 +50,27 @@ TEST(SceneAssets, EveryFileLoadsFromDiskAndEmbeddedWithoutWarnings) {
     }
     EXPECT_EQ(count, static_cast<int>(builtin.size()));
     EXPECT_GE(count, 9); // default + the scenes of issue 4 (sphere rain twice: shifted, not)
+}
+
+// The lessons' scenes (docs/lessons/) are built in under their folder's name, listed after the
+// others, and a name is only ever the whole name: "intermediate_axis" alone is no scene.
+TEST(SceneAssets, LessonScenesAreBuiltInUnderTheirFoldersName) {
+    const std::vector<std::string> builtin = app::builtin_scene_names();
+    const auto first_lesson = std::find_if(builtin.begin(), builtin.end(),
+                                           [](const auto& n) { return n.starts_with("lessons/"); });
+    ASSERT_NE(first_lesson, builtin.end());
+    EXPECT_TRUE(std::all_of(first_lesson, builtin.end(),
+                            [](const auto& n) { return n.starts_with("lessons/"); }));
+    const Scene s = app::load_scene_argument("lessons/intermediate_axis");
+    EXPECT_EQ(s.source, "builtin:lessons/intermediate_axis.json");
+    EXPECT_EQ(app::scene_name(s), "intermediate_axis"); // default outputs: intermediate_axis.mp4
+    EXPECT_EQ(app::load_scene_argument("builtin:lessons/intermediate_axis.json").bodies.size(),
+              s.bodies.size());
+    EXPECT_THROW(app::load_scene_argument("intermediate_axis"), app::SceneError);
+    EXPECT_THROW(app::load_scene_argument("elsewhere/intermediate_axis"), app::SceneError);
+    const CliResult r = run_tumble(scratch_dir(), "scenes");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("lessons/intermediate_axis "), std::string::npos) << r.out;
 }
 
 void expect_same_scene(const Scene& json, const scenes::Scene& code) {

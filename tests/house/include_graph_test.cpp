@@ -39,6 +39,9 @@ const std::vector<Room> kRooms = {
     {"app/regression",
      {"app/regression/", "app/run/", "app/scene/", "physics/", "render/", "io/"},
      {"physics/exact/"}},
+    {"app/plot",
+     {"app/plot/", "app/run/", "app/scene/", "app/study/", "physics/", "io/"},
+     {"physics/exact/"}},
     {"app/cli", {"app/", "physics/", "render/", "io/"}, {}},
     {"tests", {""}, {"bench/"}},
     {"bench", {""}, {"tests/", "app/"}},
@@ -117,6 +120,9 @@ TEST(House, TheCheckerRefusesBackwardIncludes) {
     EXPECT_FALSE(violation("app/regression/suite.cpp", "app/cli/failure.h").empty());
     EXPECT_FALSE(violation("app/regression/suite.cpp", "app/study/study.h").empty());
     EXPECT_FALSE(violation("app/run/still.cpp", "app/regression/suite.h").empty());
+    EXPECT_FALSE(violation("app/study/gnuplot.cpp", "app/plot/figure.h").empty());
+    EXPECT_FALSE(violation("app/plot/figure.cpp", "app/cli/failure.h").empty());
+    EXPECT_FALSE(violation("app/plot/figure.cpp", "app/view/camera.h").empty());
     EXPECT_FALSE(violation("tests/physics/x_test.cpp", "bench/sphere_rain.h").empty());
     EXPECT_FALSE(violation("bench/x_bench.cpp", "tests/measured.h").empty());
     EXPECT_FALSE(violation("render/png_io.cpp", "../app/scene/scene.h").empty());

@@ -1,0 +1,79 @@
+// The command lines the lessons give (docs/lessons/NN-*.md, the sh block after "# video:" and
+// "# figure:") run as a teacher would paste them, in an empty folder: each figure is made, and
+// each video's first second renders (one still, at preview size, instead of the whole video).
+#include "lesson_support.h"
+
+#include "render/png_io.h"
+
+#include <regex>
+#include <sstream>
+
+namespace tumble::test {
+namespace {
+
+const char* const kLessons[] = {"01-euler-equations.md", "02-explicit-euler.md",
+                                "03-quaternions.md",     "04-intermediate-axis.md",
+                                "05-top-precession.md",  "06-choosing-an-integrator.md"};
+
+// The command line after the comment "# <what>:" (and any further comment lines) in a lesson.
+std::string command_after(const std::string& lesson, const std::string& what) {
+    std::istringstream in(read_text(lesson_file(lesson)));
+    bool found = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with("# " + what + ":"))
+            found = true;
+        else if (found && !line.starts_with("#"))
+            return line;
+    }
+    return "";
+}
+
+// `tumble` as the binary under test, wherever the line runs it.
+std::string with_binary(const std::string& line) {
+    return std::regex_replace(line, std::regex(R"((^|&& |do )tumble )"), "$1\"$$TUMBLE\" ");
+}
+
+std::string last_output(const std::string& line) {
+    const std::size_t at = line.rfind(" -o ");
+    return at == std::string::npos ? "" : line.substr(at + 4, line.find(' ', at + 4) - at - 4);
+}
+
+TEST(Lessons, EveryFigureCommandMakesItsFigure) {
+    const auto scratch = scratch_dir();
+    for (const char* lesson : kLessons) {
+        const std::string line = command_after(lesson, "figure");
+        ASSERT_FALSE(line.empty()) << lesson << " gives no figure command";
+        if (line.starts_with("tumble study")) continue; // a minute of work: the Study.* tests
+        SCOPED_TRACE(std::string(lesson) + ": " + line);
+        const auto dir = scratch / std::filesystem::path(lesson).stem();
+        std::filesystem::create_directories(dir);
+        const CliResult r = run_shell(dir, with_binary(line));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const render::Image figure = render::read_png(dir / last_output(line));
+        EXPECT_GT(figure.width, 0);
+    }
+}
+
+TEST(Lessons, EveryVideoCommandRendersItsFirstSecond) {
+    const auto scratch = scratch_dir();
+    const CliResult help = run_tumble(scratch, "render --help");
+    if (help.out.find("--poinsot") == std::string::npos)
+        GTEST_SKIP() << "this tumble has no issue-16 overlays (--chart, --trails, --poinsot) yet";
+    for (const char* lesson : kLessons) {
+        std::string line = command_after(lesson, "video");
+        ASSERT_FALSE(line.empty()) << lesson << " gives no video command";
+        SCOPED_TRACE(std::string(lesson) + ": " + line);
+        const std::string video = last_output(line);
+        ASSERT_TRUE(video.ends_with(".mp4")) << line;
+        line.replace(line.rfind(" -o " + video), 4 + video.size(),
+                     " --preview --frame 60 -o still.png");
+        const auto dir = scratch / std::filesystem::path(lesson).stem();
+        std::filesystem::create_directories(dir);
+        const CliResult r = run_shell(dir, with_binary(line));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_GT(render::read_png(dir / "still.png").width, 0);
+    }
+}
+
+} // namespace
+} // namespace tumble::test
