@@ -83,8 +83,7 @@ int run_plot(const PlotCommand& cmd) {
     }
     plot::check_request(req); // options first: a mistake costs no reading
     study::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
-    std::vector<plot::RunFiles> files;
-    for (const std::string& r : cmd.runs) files.push_back(plot::run_files(r));
+    const std::vector<plot::RunFiles> files = plot::distinct_runs(cmd.runs);
     const std::vector<std::string> labels = labels_of(cmd, files);
     std::vector<plot::Run> runs;
     for (std::size_t i = 0; i < files.size(); ++i)

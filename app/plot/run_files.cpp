@@ -5,6 +5,7 @@
 #include "app/scene/scene_error.h"
 #include "physics/integrator.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace tumble::app::plot {
@@ -32,6 +33,17 @@ RunFiles run_files(const std::string& argument) {
     if (argument.size() > kDiagnosticsSuffix.size() && argument.ends_with(kDiagnosticsSuffix))
         return {argument.substr(0, argument.size() - kDiagnosticsSuffix.size()) + ".csv", argument};
     return {argument, diagnostics_path_for(argument)};
+}
+
+std::vector<RunFiles> distinct_runs(const std::vector<std::string>& arguments) {
+    std::vector<RunFiles> out;
+    for (const std::string& a : arguments) {
+        RunFiles r = run_files(a);
+        const bool seen = std::any_of(out.begin(), out.end(),
+                                      [&](const RunFiles& o) { return o.states == r.states; });
+        if (!seen) out.push_back(std::move(r));
+    }
+    return out;
 }
 
 std::string run_label(const std::filesystem::path& states) {

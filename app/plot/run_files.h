@@ -17,6 +17,10 @@ struct RunFiles {
 // A run named by either table: "runs/euler.csv" or "runs/euler.diagnostics.csv" gives both.
 RunFiles run_files(const std::string& argument);
 
+// The runs the arguments name, each once and in the order first named: a glob such as
+// runs/*.csv names both tables of each run.
+std::vector<RunFiles> distinct_runs(const std::vector<std::string>& arguments);
+
 // The integrator a run's file name names ("book_symplectic_euler.csv" -> "symplectic_euler": the
 // longest integrator name standing alone in the stem), else the stem: a run's tables do not say
 // which integrator made them, so name runs after it (`simulate --integrator euler -o euler.csv`).

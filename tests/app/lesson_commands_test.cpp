@@ -5,6 +5,7 @@
 
 #include "render/png_io.h"
 
+#include <algorithm>
 #include <regex>
 #include <sstream>
 
@@ -49,8 +50,18 @@ TEST(Lessons, EveryFigureCommandMakesItsFigure) {
         std::filesystem::create_directories(dir);
         const CliResult r = run_shell(dir, with_binary(line));
         ASSERT_EQ(r.exit_code, 0) << r.err;
-        const render::Image figure = render::read_png(dir / last_output(line));
-        EXPECT_GT(figure.width, 0);
+        const std::filesystem::path figure = dir / last_output(line);
+        EXPECT_GT(render::read_png(figure).width, 0);
+        // A plot's series are each drawn once (runs/*.csv names both tables of every run).
+        if (!std::filesystem::exists(std::filesystem::path(figure).replace_extension(".dat")))
+            continue;
+        std::istringstream data(read_text(std::filesystem::path(figure).replace_extension(".dat")));
+        std::vector<std::string> titles;
+        for (std::string l; std::getline(data, l);)
+            if (l.starts_with("# ") && l != "# t value") titles.push_back(l);
+        std::sort(titles.begin(), titles.end());
+        EXPECT_EQ(std::adjacent_find(titles.begin(), titles.end()), titles.end())
+            << "a series drawn twice";
     }
 }
 

@@ -178,6 +178,14 @@ TEST(Plot, SeveralRunsAreOverlaidEachNamedByItsIntegrator) {
     EXPECT_DOUBLE_EQ(blocks[11].points[1].second, 2 * kBrick[1].w.norm());
     EXPECT_DOUBLE_EQ(blocks[1].points[0].second, kBrick[0].w.y());
 
+    // A glob naming both tables of a run (runs/*.csv) draws it once.
+    write_text(dir / "book_rk4.diagnostics.csv", kDiagnostics);
+    ASSERT_EQ(run_tumble(dir, "plot book_rk4.csv book_rk4.diagnostics.csv --quantity w --bodies "
+                              "ball -q -o once.png")
+                  .exit_code,
+              0);
+    EXPECT_EQ(read_blocks(dir / "once.dat").size(), 4u);
+
     EXPECT_EQ(app::plot::run_label("runs/splitting4.csv"), "splitting4");
     EXPECT_EQ(app::plot::run_label("top_euler_momentum.csv"), "euler_momentum");
     EXPECT_EQ(app::plot::run_label("fine-rk4-h1.csv"), "rk4");
