@@ -52,12 +52,13 @@ Occluder occluder_of(MeshKind kind, const glm::mat4& t, glm::vec3 unit_half_exte
 }
 
 void nearest_occluders(std::span<const Occluder> occ, std::span<const Receiver> rec,
-                       std::vector<std::array<std::int32_t, 2>>& out) {
+                       std::vector<std::array<std::int32_t, 2>>& out,
+                       std::vector<std::int32_t>& order) {
     out.assign(rec.size(), {-1, -1});
     if (occ.empty()) return;
     // Occluders sorted by the left end of their reach along x; a receiver scans those whose
     // interval can overlap its own.
-    std::vector<std::int32_t> order(occ.size());
+    order.resize(occ.size());
     std::iota(order.begin(), order.end(), 0);
     auto left = [&](std::int32_t i) {
         return occ[std::size_t(i)].centre.x - kOcclusionReach * occ[std::size_t(i)].bound;

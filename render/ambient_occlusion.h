@@ -69,14 +69,16 @@ Occluder occluder_of(MeshKind kind, const glm::mat4& transform, glm::vec3 unit_h
 // For each receiver (a centre and a bounding radius, and the body it belongs to), the indices of
 // the two occluders whose reach comes nearest to it, -1 where fewer than two reach it. Occluders
 // of the receiver's own body are skipped. Sweep over x (O(n log n) plus the pairs that overlap),
-// ties broken by index: the same input gives the same answer.
+// ties broken by index: the same input gives the same answer. `order` is scratch (kept by the
+// caller between frames, so a warmed-up frame allocates nothing).
 struct Receiver {
     glm::vec3 centre;
     float bound;
     std::int32_t body;
 };
 void nearest_occluders(std::span<const Occluder> occluders, std::span<const Receiver> receivers,
-                       std::vector<std::array<std::int32_t, 2>>& out);
+                       std::vector<std::array<std::int32_t, 2>>& out,
+                       std::vector<std::int32_t>& order);
 
 // One ground decal: the unit square [-1, 1]^2 of the plane mesh placed on a plane under an
 // occluder (`model`), and the occluder.

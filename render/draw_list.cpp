@@ -102,11 +102,9 @@ void find_occluders(const SceneView& view, const std::vector<const GpuMesh*>& cu
         out.receivers.push_back({o.centre, unit->radius() * max_scale(in.transform), in.body});
         out.occluders.push_back(o);
     }
-    nearest_occluders(out.occluders, out.receivers, out.nearest);
-    out.all_decals.clear();
+    nearest_occluders(out.occluders, out.receivers, out.nearest, out.occluder_order);
     for (const Instance& in : view.instances)
-        if (in.mesh == MeshKind::Plane)
-            add_ground_decals(in.transform, out.occluders, out.all_decals);
+        if (in.mesh == MeshKind::Plane) add_ground_decals(in.transform, out.occluders, out.decals);
 }
 
 } // namespace
@@ -177,11 +175,12 @@ void build_draw_lists(const SceneView& view, const DrawSettings& s, const MeshLi
     out.decals.clear();
     if (s.ambient_occlusion) {
         find_occluders(view, custom, lib, out);
-        for (const Decal& d : out.all_decals) {
+        // Only the decals the camera can see (a square of half side h fits in a circle of
+        // radius h sqrt(2) < 1.5 h).
+        std::erase_if(out.decals, [&frustum](const Decal& d) {
             const float half = glm::length(glm::vec3(d.model[0]));
-            if (frustum.intersects_sphere(glm::vec3(d.model[3]), 1.5f * half))
-                out.decals.push_back(d);
-        }
+            return !frustum.intersects_sphere(glm::vec3(d.model[3]), 1.5f * half);
+        });
     }
     for (std::size_t i = 0; i < view.instances.size(); ++i) {
         const Instance& inst = view.instances[i];

@@ -63,7 +63,7 @@ struct DrawLists {
     std::vector<Receiver> receivers;
     std::vector<std::int32_t> receiver_of; // per view instance: index into receivers, or -1
     std::vector<std::array<std::int32_t, 2>> nearest;
-    std::vector<Decal> all_decals;
+    std::vector<std::int32_t> occluder_order;
 };
 
 // Half a pixel of outline error is below what the eye picks out, with or without MSAA (compared

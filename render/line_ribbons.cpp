@@ -8,24 +8,7 @@
 
 namespace tumble::render {
 
-LineRibbons::LineRibbons() : program_(shader_asset("line.vert"), shader_asset("line.frag")) {
-    glGenVertexArrays(1, &vao_);
-    glGenBuffers(1, &vbo_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    const auto stride = GLsizei(8 * sizeof(float));
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(4 * sizeof(float)));
-    glBindVertexArray(0);
-}
-
-LineRibbons::~LineRibbons() {
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
-}
+LineRibbons::LineRibbons() : program_(shader_asset("line.vert"), shader_asset("line.frag")) {}
 
 void LineRibbons::draw(const Polylines& lines, const glm::mat4& view_proj, int width, int height) {
     vertices_.clear();
@@ -62,12 +45,7 @@ void LineRibbons::draw(const Polylines& lines, const glm::mat4& view_proj, int w
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(program_.id());
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(),
-                 GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size() / 8));
-    glBindVertexArray(0);
+    stream_.draw_triangles(vertices_);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);

@@ -7,6 +7,7 @@
 // an end behind the camera are skipped (their projection would wrap around).
 #include "render/scene_view.h"
 #include "render/shader.h"
+#include "render/vertex_stream.h"
 
 #include <GL/gl.h>
 #include <glm/glm.hpp>
@@ -18,17 +19,14 @@ namespace tumble::render {
 class LineRibbons {
   public:
     LineRibbons(); // needs a current GL context
-    ~LineRibbons();
-    LineRibbons(const LineRibbons&) = delete;
-    LineRibbons& operator=(const LineRibbons&) = delete;
 
     // Draws `lines` into the bound framebuffer, blended, depth-tested, writing no depth.
     void draw(const Polylines& lines, const glm::mat4& view_proj, int width, int height);
 
   private:
     ShaderProgram program_;
-    GLuint vao_ = 0, vbo_ = 0;
-    std::vector<float> vertices_; // 8 per vertex: clip x, y, z, w, r, g, b, a
+    VertexStream stream_{4, 4};   // clip x, y, z, w; r, g, b, a (linear)
+    std::vector<float> vertices_; // this frame's, 8 floats per vertex
 };
 
 } // namespace tumble::render

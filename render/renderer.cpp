@@ -185,7 +185,6 @@ struct Renderer::Impl {
     CustomMeshCache custom_meshes;
     InstanceBuffer camera_instances, shadow_instances;
     std::optional<ShadowMap> shadow_map;
-    GLuint depth_sampler = 0; // reads the shadow map's raw depths (soft shadows)
     std::optional<OcclusionDecals> decals;
     std::unique_ptr<TextOverlay> overlay; // made on first use
     std::unique_ptr<LineRibbons> ribbons; // made on first use
@@ -203,18 +202,6 @@ struct Renderer::Impl {
             shadow_program.emplace(shader_asset("shadow.vert"), shader_asset("shadow.frag"));
             shadow_light_view_proj = shadow_program->uniform("u_light_view_proj");
             shadow_map.emplace(options.shadow_map_size);
-            if (options.soft_shadows) {
-                // The same texture through a sampler that does not compare: nearest texels,
-                // for textureGather's blocker search.
-                glGenSamplers(1, &depth_sampler);
-                glSamplerParameteri(depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-                glSamplerParameteri(depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                glSamplerParameteri(depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-                glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-                glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-                const float border[] = {1.0f, 1.0f, 1.0f, 1.0f};
-                glSamplerParameterfv(depth_sampler, GL_TEXTURE_BORDER_COLOR, border);
-            }
         }
         if (options.ambient_occlusion) decals.emplace();
         glGenVertexArrays(1, &empty_vao);
@@ -225,7 +212,6 @@ struct Renderer::Impl {
     ~Impl() {
         context.make_current();
         glDeleteVertexArrays(1, &empty_vao);
-        if (depth_sampler) glDeleteSamplers(1, &depth_sampler);
     }
 
     void shadow_pass();
@@ -285,8 +271,7 @@ void Renderer::Impl::set_lit_uniforms(const SceneView& view, const FrameMatrices
                             : 2.0f * std::tan(half_angle) * light.depth_range / light.texel_size;
             glUniform1f(u.penumbra_scale, scale);
             glUniform1i(u.shadow_depth, 2);
-            shadow_map->bind_texture(GL_TEXTURE2);
-            glBindSampler(2, depth_sampler);
+            shadow_map->bind_raw_depths(2);
         }
     }
 }

@@ -75,6 +75,16 @@ ShadowMap::ShadowMap(int size) : size_(size) {
     const float border[] = {1.0f, 1.0f, 1.0f, 1.0f};
     glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
 
+    // The raw-depth view: a sampler object overrides the texture's comparison and filtering on
+    // the unit it is bound to, and keeps the same border (far: no caster outside the map).
+    glGenSamplers(1, &raw_sampler_);
+    glSamplerParameteri(raw_sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(raw_sampler_, GL_TEXTURE_BORDER_COLOR, border);
+
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture_, 0);
@@ -83,6 +93,7 @@ ShadowMap::ShadowMap(int size) : size_(size) {
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &fbo_);
+        glDeleteSamplers(1, &raw_sampler_);
         glDeleteTextures(1, &texture_);
         throw RenderError("shadow map " + std::to_string(size) +
                           " is incomplete (glCheckFramebufferStatus = " + std::to_string(status) +
@@ -92,6 +103,7 @@ ShadowMap::ShadowMap(int size) : size_(size) {
 
 ShadowMap::~ShadowMap() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (raw_sampler_) glDeleteSamplers(1, &raw_sampler_);
     if (texture_) glDeleteTextures(1, &texture_);
 }
 
@@ -113,6 +125,11 @@ glm::mat4 ShadowMap::lookup_matrix(const LightFrame& light) const {
     m[2][2] = 0.5f;
     m[3] = glm::vec4(0.5f * corner, 0.5f * corner, 0.5f, 1.0f);
     return m * light.view_proj;
+}
+
+void ShadowMap::bind_raw_depths(GLuint unit) const {
+    bind_texture(GL_TEXTURE0 + unit);
+    glBindSampler(unit, raw_sampler_);
 }
 
 void ShadowMap::bind_texture(GLenum unit) const {

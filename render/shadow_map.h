@@ -55,13 +55,16 @@ class ShadowMap {
     // `used_size` texels this frame draws into.
     void begin_pass(int used_size) const;
     void bind_texture(GLenum unit) const;
+    // Binds the same texture to texture unit `unit` (0, 1, ...) through a sampler that reads raw
+    // depths, nearest texel, no comparison: the soft shadows' blocker search (lit.frag).
+    void bind_raw_depths(GLuint unit) const;
     // World -> texture coordinates (xy, in the used corner) and reference depth (z) in [0, 1].
     glm::mat4 lookup_matrix(const LightFrame& light) const;
     int size() const { return size_; }
 
   private:
     int size_ = 0;
-    GLuint texture_ = 0, fbo_ = 0;
+    GLuint texture_ = 0, fbo_ = 0, raw_sampler_ = 0;
 };
 
 } // namespace tumble::render

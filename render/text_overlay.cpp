@@ -61,28 +61,12 @@ TextOverlay::TextOverlay(int image_width, int image_height)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
-    glGenVertexArrays(1, &vao_);
-    glGenBuffers(1, &vbo_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    const auto stride = GLsizei(8 * sizeof(float));
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(2 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(4 * sizeof(float)));
-    glBindVertexArray(0);
     viewport_uniform_ = program_.uniform("u_viewport");
     glUseProgram(program_.id());
     glUniform1i(program_.uniform("u_atlas"), 0);
 }
 
 TextOverlay::~TextOverlay() {
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
     if (texture_) glDeleteTextures(1, &texture_);
 }
 
@@ -168,12 +152,7 @@ void TextOverlay::submit(int width, int height) {
     glUniform2f(viewport_uniform_, float(width), float(height));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(),
-                 GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size() / 8));
-    glBindVertexArray(0);
+    stream_.draw_triangles(vertices_);
     glDisable(GL_BLEND);
 }
 

@@ -5,6 +5,7 @@
 // change every frame do not make the text jiggle.
 #include "render/scene_view.h"
 #include "render/shader.h"
+#include "render/vertex_stream.h"
 
 #include <GL/gl.h>
 
@@ -50,8 +51,9 @@ class TextOverlay {
     float ascent_ = 0, line_height_ = 0;
     ShaderProgram program_;
     GLint viewport_uniform_ = -1;
-    GLuint texture_ = 0, vao_ = 0, vbo_ = 0;
-    std::vector<float> vertices_; // 8 floats per vertex: x, y, u, v, r, g, b, a
+    GLuint texture_ = 0;
+    VertexStream stream_{2, 2, 4}; // pixel x, y; atlas u, v; r, g, b, a
+    std::vector<float> vertices_;  // 8 floats per vertex: x, y, u, v, r, g, b, a
 };
 
 } // namespace tumble::render

@@ -41,12 +41,7 @@ void apply_teaching_overrides(const RenderCommand& cmd, Scene& scene) {
         rs.overlay_body = {*cmd.overlay_body, "--overlay-body"};
         rs.overlay = true;
     }
-    std::vector<std::string> names;
-    for (const BodyLook& look : scene.looks) names.push_back(look.name);
-    std::vector<bool> dynamic;
-    for (const physics::BodyDef& b : scene.bodies)
-        dynamic.push_back(b.motion == physics::Motion::Dynamic);
-    resolve_render_bodies(rs, names, dynamic, scene.source);
+    resolve_render_bodies(scene);
 }
 
 } // namespace

@@ -15,8 +15,15 @@ void resolve(RenderSettings::BodyRef& ref, const std::vector<std::string>& names
 
 } // namespace
 
-void resolve_render_bodies(RenderSettings& rs, const std::vector<std::string>& names,
-                           const std::vector<bool>& dynamic, const std::string& file) {
+void resolve_render_bodies(Scene& scene) {
+    RenderSettings& rs = scene.render;
+    const std::string& file = scene.source;
+    std::vector<std::string> names;
+    std::vector<bool> dynamic;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        names.push_back(scene.looks[i].name);
+        dynamic.push_back(scene.bodies[i].motion == physics::Motion::Dynamic);
+    }
     resolve(rs.chart_body, names, file, "chart");
     resolve(rs.poinsot, names, file, "draw Poinsot's construction for");
     resolve(rs.overlay_body, names, file, "show in the overlay");

@@ -57,12 +57,6 @@ struct RenderSettings {
     int trail_axis = -1; // 0, 1, 2: also trace the tip of this body axis
 };
 
-// Resolves the named bodies of `rs` against the scene's body names (SceneError naming `file` and
-// the place when one is unknown), and checks what each needs: w and w_body charts and Poinsot's
-// construction need a dynamic body.
-void resolve_render_bodies(RenderSettings& rs, const std::vector<std::string>& names,
-                           const std::vector<bool>& dynamic, const std::string& file);
-
 struct Scene {
     std::string source; // file path, or "builtin:<name>" for an embedded scene
     std::string title;
@@ -78,6 +72,12 @@ struct Scene {
     std::vector<std::string> warnings;
     RenderSettings render;
 };
+
+// Resolves the bodies that scene.render names (render.chart.body, render.poinsot,
+// render.overlay_body, or the options that set them) against the scene's bodies (SceneError
+// naming the file and the place when one is unknown), and checks what each needs: w and w_body
+// charts and Poinsot's construction need a body that moves.
+void resolve_render_bodies(Scene& scene);
 
 // Loads a scene from JSON text; `source` names it in error messages. Throws SceneError.
 Scene load_scene(const std::string& text, const std::string& source);

@@ -126,10 +126,7 @@ Scene load_scene(const std::string& text, const std::string& source) {
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);
-    std::vector<bool> dynamic;
-    for (const physics::BodyDef& b : s.bodies)
-        dynamic.push_back(b.motion == physics::Motion::Dynamic);
-    resolve_render_bodies(s.render, names, dynamic, source);
+    resolve_render_bodies(s);
     // Physics validation, mapped to JSON paths; then what is legal but probably unintended.
     const CheckedStart start = build_checked(s, s.world.dt);
     s.warnings = initial_state_warnings(s, start.model, start.state);

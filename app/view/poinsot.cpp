@@ -1,5 +1,7 @@
 #include "app/view/poinsot.h"
 
+#include "app/view/body_size.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -39,7 +41,7 @@ PoinsotConstruction::PoinsotConstruction(const physics::Model& model, const phys
     : body_(body) {
     const std::size_t b = std::size_t(body);
     const PoinsotGeometry g = poinsot_geometry(model.inertia[b], initial.q[b], initial.w[b]);
-    const double size = 1.7 * std::sqrt(model.inertia[b].maxCoeff() / model.mass[b]);
+    const double size = body_size(model, body);
     const double longest = g.semi_axes.maxCoeff();
     scale_ = longest > 0.0 && std::isfinite(longest) ? 1.5 * size / longest : 1.0;
     record(model, initial);

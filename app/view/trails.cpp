@@ -1,5 +1,7 @@
 #include "app/view/trails.h"
 
+#include "app/view/body_size.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,10 +20,7 @@ Trails::Trails(const Scene& scene, const physics::Model& model, const physics::S
     for (int b : model.dynamic_bodies) {
         bodies_.push_back(b);
         colours_.push_back(scene.looks[std::size_t(b)].color);
-        // A body's size, 1.7 sqrt(I_max / m) (as the vector arrows): its radius for a sphere,
-        // its half-diagonal for a box; the axis tip sits 1.2 sizes out.
-        const double i_max = model.inertia[std::size_t(b)].maxCoeff();
-        reach_.push_back(float(1.2 * 1.7 * std::sqrt(i_max / model.mass[std::size_t(b)])));
+        reach_.push_back(float(1.2 * body_size(model, b))); // the axis tip: 1.2 sizes out
     }
     centres_.resize(capacity_ * bodies_.size());
     tips_.resize(axis_ >= 0 ? capacity_ * bodies_.size() : 0);

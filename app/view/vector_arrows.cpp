@@ -1,5 +1,7 @@
 #include "app/view/vector_arrows.h"
 
+#include "app/view/body_size.h"
+
 #include "physics/diagnostics.h"
 #include "physics/rigid_body.h"
 #include "render/cone_mesh.h"
@@ -65,7 +67,7 @@ VectorArrows::VectorArrows(const physics::Model& model, const physics::State& in
       cone_(std::make_shared<const render::MeshData>(render::make_cone())) {
     for (int i : model.dynamic_bodies) {
         const double i_max = model.inertia[i].maxCoeff();
-        const double size = 1.7 * std::sqrt(i_max / model.mass[i]);
+        const double size = body_size(model, i);
         const double w_ref = std::max(initial.w[i].norm(), kTwoPi);
         const double l_ref =
             std::max(physics::spin_angular_momentum(model, initial, i).norm(), i_max * kTwoPi);

@@ -74,7 +74,8 @@ TEST(AmbientOcclusion, EachBodyGetsTheTwoOccludersThatReachItMostAndNeverItself)
     std::vector<Receiver> rec;
     for (const Occluder& o : occ) rec.push_back({o.centre, 1.0f, o.body});
     std::vector<std::array<std::int32_t, 2>> near;
-    nearest_occluders(occ, rec, near);
+    std::vector<std::int32_t> scratch;
+    nearest_occluders(occ, rec, near, scratch);
     ASSERT_EQ(near.size(), occ.size());
     EXPECT_EQ(near[1][0], 0); // ties go to the lower index
     EXPECT_EQ(near[1][1], 2);

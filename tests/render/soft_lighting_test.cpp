@@ -68,11 +68,19 @@ Instance sphere(glm::vec3 c, float r, glm::vec3 colour, int body) {
     return s;
 }
 
-Image draw(const SceneView& v, RenderOptions o) {
-    Renderer r(o);
-    Image img;
-    r.draw(v, img);
-    return img;
+// The view drawn with one effect on and off, everything else as `o` says, one sample per pixel
+// (each pixel one point of one surface).
+struct OnOff {
+    Image on, off;
+};
+OnOff on_and_off(const SceneView& v, RenderOptions o, bool RenderOptions::*effect) {
+    o.samples = 1;
+    OnOff out;
+    for (const bool state : {true, false}) {
+        o.*effect = state;
+        Renderer(o).draw(v, state ? out.on : out.off);
+    }
+    return out;
 }
 
 TEST(SoftLighting, GroundOcclusionFallsOffAsTheFormFactorOfTheSphere) {
@@ -90,11 +98,8 @@ TEST(SoftLighting, GroundOcclusionFallsOffAsTheFormFactorOfTheSphere) {
     v.camera.fov_y_deg = 30.0f;
     v.instances = {ground(), sphere(c, r, {0.8f, 0.3f, 0.2f}, 1)};
     RenderOptions o{320, 320};
-    o.samples = 1;
     o.shadows = false;
-    const Image with = draw(v, o);
-    o.ambient_occlusion = false;
-    const Image without = draw(v, o);
+    const auto [with, without] = on_and_off(v, o, &RenderOptions::ambient_occlusion);
     save(with, "ao_sphere");
     save(without, "ao_sphere_off");
     double worst = 0.0;
@@ -129,11 +134,8 @@ TEST(SoftLighting, ABodyDarkensTheAmbientLightOfABodyNearItAndOfNothingBeyond) {
     slab.body = 1;
     v.instances = {ground(), slab, sphere({0.0f, 0.3f, 0.45f}, 0.2f, {0.2f, 0.4f, 0.8f}, 2)};
     RenderOptions o{320, 320};
-    o.samples = 1;
     o.shadows = false;
-    const Image with = draw(v, o);
-    o.ambient_occlusion = false;
-    const Image without = draw(v, o);
+    const auto [with, without] = on_and_off(v, o, &RenderOptions::ambient_occlusion);
     save(with, "ao_slab");
     const glm::ivec2 near = to_pixel(v.camera, {0.3f, 0.3f, 0.2f}, 320, 320);
     const glm::ivec2 far = to_pixel(v.camera, {0.6f, -0.3f, 0.2f}, 320, 320);
@@ -179,11 +181,8 @@ TEST(SoftLighting, ShadowsHardenTowardsTheContact) {
     plank.body = 1;
     v.instances = {ground(), plank}; // its shadow's side edge: y = 0.62, between checker lines
     RenderOptions o{900, 900};
-    o.samples = 1;
     o.ambient_occlusion = false;
-    const Image soft = draw(v, o);
-    o.soft_shadows = false;
-    const Image hard = draw(v, o);
+    const auto [soft, hard] = on_and_off(v, o, &RenderOptions::soft_shadows);
     save(soft, "penumbra_soft");
     save(hard, "penumbra_hard");
     auto widths = [&](const Image& img) {
@@ -219,12 +218,8 @@ TEST(SoftLighting, AReflectingFloorShowsTheMirrorImageAndNothingElse) {
     v.camera.target = {0.0f, 0.0f, 0.2f};
     v.instances = {ground(), sphere({0.0f, 0.0f, 0.6f}, 0.3f, {0.9f, 0.1f, 0.1f}, 1)};
     RenderOptions o{320, 240};
-    o.samples = 1;
     o.ambient_occlusion = false;
-    o.reflections = true;
-    const Image mirror = draw(v, o);
-    o.reflections = false;
-    const Image plain = draw(v, o);
+    const auto [mirror, plain] = on_and_off(v, o, &RenderOptions::reflections);
     save(mirror, "reflection");
     auto redness = [](const Image& img, glm::ivec2 p) {
         return int(pixel(img, p)[0]) - int(pixel(img, p)[1]);
