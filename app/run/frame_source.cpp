@@ -4,6 +4,9 @@
 #include "app/view/view_builder.h"
 #include "physics/step.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace tumble::app {
 
 FrameSource::FrameSource(const Scene& scene, const Timeline& timeline, Simulation& sim,
@@ -11,6 +14,16 @@ FrameSource::FrameSource(const Scene& scene, const Timeline& timeline, Simulatio
     : scene_(scene), timeline_(timeline), sim_(sim), first_(first), last_(last),
       done_(first > last), initial_(physics::diagnose(sim.model, sim.state)),
       arrows_(sim.model, sim.state) {}
+
+void FrameSource::resume(std::int64_t frame, const physics::State& state) {
+    if (frame < 0 || frame > first_ || k_ != 0 ||
+        state.step != frame * std::int64_t{timeline_.steps_per_frame})
+        throw std::invalid_argument("cannot resume frame " + std::to_string(frame) + " at step " +
+                                    std::to_string(state.step) + " before frame " +
+                                    std::to_string(first_));
+    sim_.state = state;
+    k_ = frame;
+}
 
 void FrameSource::step_one_frame() {
     for (int s = 0; s < timeline_.steps_per_frame; ++s) sim_.step();

@@ -20,6 +20,12 @@ class FrameSource {
     FrameSource(const Scene& scene, const Timeline& timeline, Simulation& sim, std::int64_t first,
                 std::int64_t last);
 
+    // Continues from `state`, the state of frame `frame` <= first (a checkpoint, app/cluster),
+    // instead of stepping there from t = 0. Call before next(). What is measured against t = 0
+    // (the overlay's initial energy, the arrows' scales) keeps the values of the simulation's
+    // state at construction. Throws std::invalid_argument when `state` is not at that frame's step.
+    void resume(std::int64_t frame, const physics::State& state);
+
     // Fills `view` with the next frame (reusing its storage) and steps on to the one after.
     // Returns false when every frame has been produced. Throws physics::DivergenceError.
     bool next(render::SceneView& view);
