@@ -22,8 +22,9 @@ Subcommand add_scenes_command(CLI::App& app);
 Subcommand add_goldens_command(CLI::App& app);
 Subcommand add_diff_command(CLI::App& app);
 Subcommand add_study_command(CLI::App& app);
-Subcommand add_join_command(CLI::App& app); // docs/cluster.md: join, shards
+Subcommand add_join_command(CLI::App& app); // docs/cluster.md: join, shards, sweep
 Subcommand add_shards_command(CLI::App& app);
+Subcommand add_sweep_command(CLI::App& app);
 Subcommand add_version_flag(CLI::App& app); // tumble --version
 
 } // namespace tumble::app
