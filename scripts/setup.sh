@@ -24,6 +24,10 @@ packages=(
   # `tumble study` draws its plots by running gnuplot on generated scripts (pngcairo terminal,
   # DejaVu fonts): a small, long-kept Debian package without X (docs/study.md says why).
   gnuplot-nox fonts-dejavu-core
+  # The cluster test starts a real single-node Slurm (tests/cluster/slurm_test.sh, docs/cluster.md):
+  # Debian's slurm-wlm (slurmctld, slurmd, sbatch) and munge, its authentication daemon. Only the
+  # test runs them, each stopped by its process id when it ends.
+  slurm-wlm munge
 )
 
 missing=()
