@@ -37,8 +37,8 @@ void add_render_options(CLI::App* r, RenderCommand& render) {
         "render only the frame shown at t = SECONDS (the nearest frame) to a .png still");
     time->excludes(frame);
     r->add_option("--frames", render.frames,
-                  "render only frames A to B-1 of the run, a shard (A:B; on key frames, one a "
-                  "second, for .mp4); join MP4 shards with `tumble join`")
+                  "render only frames A to B-1 of the run, a shard (A:B; for .mp4 on key frames, "
+                  "every 2 s); join MP4 shards with `tumble join`")
         ->excludes(frame)
         ->excludes(time);
     r->add_option("--from-checkpoints", render.from_checkpoints,

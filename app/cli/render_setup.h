@@ -77,8 +77,8 @@ std::string output_name(const RenderCommand& cmd, const Scene& scene,
 // creating the output's folder first (not for a name with a %d pattern). An output that cannot be
 // opened (unknown type, odd size for H.264, a folder that cannot be made) is bad input: throws
 // io::BadInput. Errors while writing later are failed runs (render::SinkError).
-// MP4s get a key frame every second (app/cluster/frame_range.h: key_interval), where the encoder
-// starts afresh, so that any whole second of a video can be a shard of it.
+// MP4s get a key frame every two seconds (app/cluster/frame_range.h: key_interval), where the
+// encoder starts afresh, so that a video can be split into shards there.
 std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
                                                     const std::string& output,
                                                     const RunOutput& run = {});

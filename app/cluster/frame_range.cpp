@@ -9,7 +9,7 @@
 namespace tumble::app {
 
 int key_interval(int fps) {
-    return fps;
+    return 2 * fps;
 }
 
 namespace {
@@ -46,8 +46,9 @@ FrameRange parse_frame_range(const std::string& option, const std::string& text,
     if (!on_key(r.first) || (!on_key(r.end) && r.end != frames))
         throw refused(option, text,
                       "a video shard starts and ends on key frames: expected multiples of " +
-                          std::to_string(key_interval) + " (one key frame a second), or END = " +
-                          std::to_string(frames) + " (`tumble shards` prints such ranges)");
+                          std::to_string(key_interval) +
+                          " (a key frame every two seconds), or END = " + std::to_string(frames) +
+                          " (`tumble shards` prints such ranges)");
     return r;
 }
 

@@ -4,7 +4,7 @@
 # usage: scripts/slurm/submit.sh SCENE N OUT [CHECKPOINT_DIR]
 #   SCENE  scene file or built-in name;  N  number of shards;  OUT  the joined video (.mp4)
 #   CHECKPOINT_DIR  optional: step the scene once first, writing checkpoints there (every EVERY
-#                   frames, default 60), and start every shard from the nearest one
+#                   frames, default 120), and start every shard from the nearest one
 # Environment passed on: TUMBLE, SHARD_OPTIONS, RENDER_OPTIONS, EVERY (see the .sbatch files);
 # SBATCH_OPTIONS: options for every sbatch call (e.g. "--partition=render --cpus-per-task=8").
 # Prints the job ids, one per line; the last is the join's.

@@ -17,7 +17,7 @@ ShardTag some_tag() {
 TEST(ShardTag, ReadsBackWhatItWrites) {
     const ShardTag t = some_tag();
     EXPECT_EQ(t.frames, 600);
-    EXPECT_EQ(t.key_interval, 60);
+    EXPECT_EQ(t.key_interval, 120); // 2 s at 60 fps
     const std::string text = format_tag(t);
     EXPECT_TRUE(text.starts_with("tumble-shard/1 frames=60:120/600 scene=")) << text;
     const auto back = parse_tag(text, "part.mp4");

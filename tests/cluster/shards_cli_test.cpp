@@ -14,8 +14,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// 3 s at 20 fps (60 frames, key frames at 0, 20, 40) of 160x90: short, and still moving.
-const std::string kRun = "default --fps 20 --duration 3";
+// 6 s at 10 fps (60 frames, a key frame every 2 s: 0, 20, 40) of 160x90: short, still moving.
+const std::string kRun = "default --fps 10 --duration 6";
 const std::string kLook = "--width 160 --height 90";
 
 // Per decoded frame: its timestamp and the MD5 of its pixels (ffmpeg's framemd5).
@@ -60,7 +60,7 @@ TEST(ShardsCli, JoinedShardsDecodeToTheFramesOfASingleRender) {
     const std::vector<std::string> single = decoded_frames(dir, "single.mp4");
     const std::vector<std::string> joined = decoded_frames(dir, "out/joined.mp4");
     ASSERT_EQ(single.size(), 60u);
-    // Key frames at every second (20 frames), where the encoder starts afresh: the only places a
+    // Key frames every two seconds (20 frames), where the encoder starts afresh: the only places a
     // shard may start.
     const CliResult keys = run_shell(dir, "ffprobe -v error -show_entries frame=key_frame -of "
                                           "csv=p=0 single.mp4");
@@ -97,11 +97,11 @@ TEST(ShardsCli, JoinRefusesShardsThatDoNotBelongTogether) {
                       .exit_code,
                   0);
     ASSERT_EQ(run_tumble(dir, render + "--frames 20:40 --crf 20 -o crf.mp4").exit_code, 0);
-    ASSERT_EQ(run_tumble(dir, "render dominoes --fps 20 --duration 3 " + kLook +
+    ASSERT_EQ(run_tumble(dir, "render dominoes --fps 10 --duration 6 " + kLook +
                                   " -q --frames 20:40 -o other.mp4")
                   .exit_code,
               0);
-    ASSERT_EQ(run_shell(dir, "ffmpeg -v error -f lavfi -i testsrc=size=160x90:rate=20 -t 1 "
+    ASSERT_EQ(run_shell(dir, "ffmpeg -v error -f lavfi -i testsrc=size=160x90:rate=10 -t 2 "
                              "-c:v libx264 plain.mp4")
                   .exit_code,
               0);
@@ -151,10 +151,10 @@ TEST(ShardsCli, ShardsPrintsOneCommandPerShardAndTheJoin) {
     const auto dir = scratch_dir();
     const CliResult r = run_tumble(dir, "shards default --count 4 -o 'my run.mp4' -- --width 640");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    // 600 frames are 10 one-second segments: 4 shards take 3, 3, 2 and 2 of them.
+    // 600 frames are 5 two-second segments of 120: 4 shards take 2, 1, 1 and 1 of them.
     EXPECT_EQ(r.out,
-              "tumble render default --frames 0:180 -o 'my run.part000.mp4' --width 640\n"
-              "tumble render default --frames 180:360 -o 'my run.part001.mp4' --width 640\n"
+              "tumble render default --frames 0:240 -o 'my run.part000.mp4' --width 640\n"
+              "tumble render default --frames 240:360 -o 'my run.part001.mp4' --width 640\n"
               "tumble render default --frames 360:480 -o 'my run.part002.mp4' --width 640\n"
               "tumble render default --frames 480:600 -o 'my run.part003.mp4' --width 640\n");
     const CliResult join = run_tumble(dir, "shards default --count 4 -o 'my run.mp4' --join");
@@ -163,7 +163,7 @@ TEST(ShardsCli, ShardsPrintsOneCommandPerShardAndTheJoin) {
     const CliResult own = run_tumble(dir, "shards default --count 2 -- --fps 30");
     EXPECT_EQ(own.exit_code, 2);
     EXPECT_NE(own.err.find("give --fps to `tumble shards` itself"), std::string::npos) << own.err;
-    EXPECT_EQ(run_tumble(dir, "shards default --count 11").exit_code, 2); // 10 seconds
+    EXPECT_EQ(run_tumble(dir, "shards default --count 6").exit_code, 2); // 5 segments
 }
 
 TEST(ShardsCli, RenderRefusesRangesOffKeyFramesAndOutputsThatCannotBeShards) {
@@ -194,7 +194,7 @@ TEST(CheckpointCli, ACheckpointOfAnotherRunIsRefusedAndNothingIsWritten) {
         EXPECT_FALSE(fs::exists(dir / "out.mp4"));
     };
     const std::string from = " " + kLook + " --frames 40:60 --from-checkpoints ck";
-    refused("render dominoes --fps 20 --duration 3" + from, "made from another scene");
+    refused("render dominoes --fps 10 --duration 6" + from, "made from another scene");
     refused("render " + kRun + " --integrator euler" + from, "integrator rk4, this run uses euler");
     refused("render " + kRun + " --dt 0.001" + from, "it was made with step");
     refused("render " + kRun + " " + kLook + " --frames 40:60 --from-checkpoints nowhere",
