@@ -11,7 +11,7 @@ fail() {
   exit 1
 }
 debs=("$package_dir"/tumble_*_amd64.deb)
-[ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || fail "expected one tumble_*_amd64.deb in $package_dir"
+{ [ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ]; } || fail "expected one tumble_*_amd64.deb in $package_dir"
 deb=${debs[0]}
 [[ $(basename "$deb") =~ ^tumble_[0-9]+\.[0-9]+\.[0-9]+_amd64\.deb$ ]] || fail "named $(basename "$deb")"
 rm -rf "$work" && mkdir -p "$work" && dpkg -x "$deb" "$work"

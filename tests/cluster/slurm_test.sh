@@ -7,7 +7,8 @@
 #      checkpoints, and the dependent join;
 #   4. the joined video's decoded frames (ffmpeg, an independent decoder) compared with those of
 #      a single-process render by the same binary, frame by frame;
-#   5. every daemon started here stopped by its process id, and checked gone.
+#   5. the sweep array job (scripts/slurm/render-sweep.sbatch) over a two-scene sweep;
+#   6. every daemon started here stopped by its process id, and checked gone.
 # Any step that fails fails the test with the reason and the daemons' logs: Slurm not starting
 # is a failure, never a skip.
 # usage: slurm_test.sh PACKAGE_DIR SOURCE_DIR WORK_DIR
@@ -30,7 +31,7 @@ chmod 700 "$work" "$work/munge"
 
 # 1. The package.
 debs=("$package_dir"/tumble_*_amd64.deb)
-[ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || fail "expected one tumble_*_amd64.deb in $package_dir, found: ${debs[*]}"
+{ [ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ]; } || fail "expected one tumble_*_amd64.deb in $package_dir, found: ${debs[*]}"
 dpkg -x "${debs[0]}" "$work/pkg"
 export TUMBLE=$work/pkg/usr/bin/tumble
 [ -x "$TUMBLE" ] || fail "the package has no usr/bin/tumble"
@@ -121,41 +122,43 @@ node_idle() { [ "$(sinfo -h -N -o %t 2> /dev/null)" = idle ]; }
 wait_for 60 "the Slurm node becoming idle (slurmctld and slurmd up)" node_idle
 echo "slurm: $(sinfo -h -N -o '%N %t %c CPUs')"
 
-# 3. The shipped scripts: 4 shards of 4 s at 10 fps (40 frames, key frames at 0, 10, 20, 30),
-# small frames so that the test stays short on 2 cores.
+# 3. The shipped scripts: 4 shards of 8 s at 5 fps (40 frames, a key frame every 2 s: 0, 10, 20,
+# 30), small frames so that the test stays short on 2 cores.
 mkdir -p "$work/jobs"
 cd "$work/jobs"
-export EVERY=10 SHARD_OPTIONS="--fps 10 --duration 4" RENDER_OPTIONS="--width 160 --height 90"
+export EVERY=10 SHARD_OPTIONS="--fps 5 --duration 8" RENDER_OPTIONS="--width 160 --height 90"
 jobs=$("$source_dir/scripts/slurm/submit.sh" default 4 "$work/out/default.mp4" "$work/checkpoints")
 join_job=$(echo "$jobs" | tail -n 1)
 echo "jobs: $(echo "$jobs" | tr '\n' ' ')"
-job_state() { scontrol show job "$1" -o 2> /dev/null | grep -o 'JobState=[A-Z_]*' | head -n 1 | cut -d= -f2; }
 deadline=$((SECONDS + timeout_s))
-while :; do
-  state=$(job_state "$join_job")
-  case "$state" in
-    COMPLETED) break ;;
-    FAILED | CANCELLED | TIMEOUT | NODE_FAIL | OUT_OF_MEMORY | BOOT_FAIL | DEADLINE)
-      squeue -a >&2 || true
-      fail "the join job $join_job ended $state" ;;
-  esac
-  # A failed job leaves the jobs after it pending forever (DependencyNeverSatisfied).
-  for job in $jobs; do
-    info=$(scontrol show job "$job" -o 2> /dev/null || true)
-    if echo "$info" | grep -Eq 'JobState=(FAILED|CANCELLED|TIMEOUT)|Reason=DependencyNeverSatisfied'; then
-      fail "job $job failed or waits for one that did: $(echo "$info" | grep -Eo '(JobState|Reason|ExitCode)=[^ ]*' | tr '\n' ' ')"
-    fi
+# Waits until every task of the jobs given is COMPLETED; fails on the first that failed, or on a
+# job left waiting for one that did (DependencyNeverSatisfied), or at the deadline.
+wait_jobs() {
+  local job info pending
+  while :; do
+    pending=0
+    for job in "$@"; do
+      info=$(scontrol show job "$job" -o 2> /dev/null || true)
+      if echo "$info" | grep -Eq 'JobState=(FAILED|CANCELLED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY)|Reason=DependencyNeverSatisfied'; then
+        fail "job $job failed or waits for one that did: $(echo "$info" | grep -Eo '(JobId|JobState|Reason|ExitCode)=[^ ]*' | tr '\n' ' ')"
+      fi
+      echo "$info" | grep -Eq 'JobState=(PENDING|RUNNING|CONFIGURING|COMPLETING)' && pending=1
+      [ -n "$info" ] || pending=1
+    done
+    [ $pending -eq 0 ] && return 0
+    [ $SECONDS -lt $deadline ] || fail "jobs $* did not finish within $timeout_s s"
+    sleep 1
   done
-  [ $SECONDS -lt $deadline ] || fail "the jobs did not finish within $timeout_s s (join: $state)"
-  sleep 1
-done
+}
+# shellcheck disable=SC2086 # the job ids, one word each
+wait_jobs $jobs
 echo "join job $join_job: COMPLETED after ${SECONDS} s"
 grep -h "continuing from" tumble-shard-*.log | sed 's/^/  /'
 [ "$(grep -l "continuing from" tumble-shard-*.log | wc -l)" -eq 3 ] ||
   fail "shards 1 to 3 should start from checkpoints (frames 10, 20, 30)"
 
 # 4. A single-process render with the same binary, decoded frame by frame by ffmpeg.
-"$TUMBLE" render default --fps 10 --duration 4 --width 160 --height 90 -q -o "$work/single.mp4"
+"$TUMBLE" render default --fps 5 --duration 8 --width 160 --height 90 -q -o "$work/single.mp4"
 frames() { ffmpeg -v error -i "$1" -f framemd5 - | grep -v '^#' | awk -F, '{print $2, $NF}'; }
 frames "$work/out/default.mp4" > "$work/joined.md5"
 frames "$work/single.mp4" > "$work/single.md5"
@@ -164,5 +167,19 @@ frames "$work/single.mp4" > "$work/single.md5"
 if ! diff "$work/single.md5" "$work/joined.md5" > "$work/frames.diff"; then
   fail "the joined video's frames differ from the single render's: $(head -n 6 "$work/frames.diff" | tr '\n' ' ')"
 fi
-echo "PASS: 40 decoded frames of the Slurm-joined video equal the single render's"
-# 5. trap: stop_daemons
+echo "joined: 40 decoded frames equal the single render's"
+
+# The sweep array job: two scenes from `tumble sweep`, one task each.
+"$TUMBLE" sweep default --set world.integrator=euler,rk4 --set world.duration=1 -q -o "$work/sweep"
+sweep_job=$(SWEEP=$work/sweep RENDER_OPTIONS="--fps 5 --width 160 --height 90" \
+  sbatch --parsable --export=ALL --array=0-1 "$source_dir/scripts/slurm/render-sweep.sbatch")
+wait_jobs "$sweep_job"
+for i in 0 1; do
+  video=$work/sweep/scene_00$i.mp4
+  [ -f "$video" ] || fail "the sweep job wrote no $video"
+  [ "$(frames "$video" | wc -l)" -eq 5 ] || fail "$video does not decode to 5 frames"
+done
+cmp -s <(frames "$work/sweep/scene_000.mp4") <(frames "$work/sweep/scene_001.mp4") &&
+  fail "euler and rk4 gave the same frames: the sweep's scenes are not what they say"
+echo "PASS: 40 decoded frames of the Slurm-joined video equal the single render's; the sweep array job rendered both scenes"
+# 6. trap: stop_daemons
