@@ -13,6 +13,7 @@
 #include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
 #include "app/run/simulation.h"
+#include "io/bad_input.h"
 #include "physics/diagnostics.h"
 
 #include <chrono>
@@ -112,6 +113,9 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
 }
 
 int run_render(const RenderCommand& command) {
+    if (!command.compare.empty() && (command.frames || !command.from_checkpoints.empty()))
+        throw io::BadInput("--compare draws whole runs side by side: it takes no --frames or "
+                           "--from-checkpoints");
     if (!command.compare.empty()) return run_compare(command);
     RenderCommand cmd = command;
     Scene scene = load_for_command(cmd.common);

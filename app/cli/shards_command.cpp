@@ -76,20 +76,10 @@ std::string shard_output(const std::string& output, int i) {
     return stem + part;
 }
 
-int run_shards(const ShardsCommand& cmd) {
-    check_extra(cmd.extra);
-    const Scene scene = load_for_command(cmd.common);
-    const int fps = cmd.fps.value_or(scene.render.fps);
-    if (fps < 1) throw io::BadInput("--fps " + std::to_string(fps) + ": expected at least 1");
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, fps);
-    const std::string output = cmd.output.empty() ? scene_name(scene) + ".mp4" : cmd.output;
-    if (!png_output(output) && !output.ends_with(".mp4"))
-        throw io::BadInput("shards -o " + output +
-                           ": expected the joined video (NAME.mp4) or PNG frames (frames/ or "
-                           "frames/%06d.png)");
-    const int keys = png_output(output) ? 1 : key_interval(fps);
-    const std::vector<FrameRange> ranges = split_frames(tl.frames, keys, cmd.count);
-    std::vector<std::string> shared; // every command's options after the range and output
+// The options every render command carries after its range and output: the checkpoints, the
+// scene overrides `shards` was given (they decide the frames), then the render options after --.
+std::vector<std::string> shared_options(const ShardsCommand& cmd) {
+    std::vector<std::string> shared;
     if (!cmd.from_checkpoints.empty()) shared = {"--from-checkpoints", cmd.from_checkpoints};
     const SceneOptions& o = cmd.common;
     if (o.integrator) shared.insert(shared.end(), {"--integrator", *o.integrator});
@@ -97,36 +87,60 @@ int run_shards(const ShardsCommand& cmd) {
     if (o.dt) shared.insert(shared.end(), {"--dt", number_text(*o.dt)});
     if (cmd.fps) shared.insert(shared.end(), {"--fps", std::to_string(*cmd.fps)});
     shared.insert(shared.end(), cmd.extra.begin(), cmd.extra.end());
-    std::string parts;
-    for (int i = 0; i < cmd.count; ++i) parts += " " + shell_word(shard_output(output, i));
-    const std::string join = shell_word(cmd.tumble) + " join" + parts + " -o " + shell_word(output);
+    return shared;
+}
+
+std::string command_line(const std::vector<std::string>& words) {
+    std::string line;
+    for (const std::string& w : words) line += (line.empty() ? "" : " ") + shell_word(w);
+    return line;
+}
+
+// The shards' ranges: on key frames for a video, anywhere for PNG frames.
+std::vector<FrameRange> shard_ranges(const ShardsCommand& cmd, const Scene& scene,
+                                     const std::string& output) {
+    const int fps = cmd.fps.value_or(scene.render.fps);
+    if (fps < 1) throw io::BadInput("--fps " + std::to_string(fps) + ": expected at least 1");
+    if (!png_output(output) && !output.ends_with(".mp4"))
+        throw io::BadInput("shards -o " + output +
+                           ": expected the joined video (NAME.mp4) or PNG frames (frames/ or "
+                           "frames/%06d.png)");
+    const Timeline tl = make_timeline(scene.world.dt, scene.duration, fps);
+    return split_frames(tl.frames, png_output(output) ? 1 : key_interval(fps), cmd.count);
+}
+
+int run_shards(const ShardsCommand& cmd) {
+    check_extra(cmd.extra);
+    const Scene scene = load_for_command(cmd.common);
+    const std::string output = cmd.output.empty() ? scene_name(scene) + ".mp4" : cmd.output;
+    const std::vector<FrameRange> ranges = shard_ranges(cmd, scene, output);
+    std::vector<std::string> join = {cmd.tumble, "join"};
+    for (int i = 0; i < cmd.count; ++i) join.push_back(shard_output(output, i));
+    join.insert(join.end(), {"-o", output});
+    if (png_output(output) && (cmd.join || !cmd.common.quiet)) {
+        const std::string why = "PNG shards need no join: together they write " + output +
+                                ", each frame numbered as in the whole run";
+        if (cmd.join) throw io::BadInput("shards --join: " + why);
+        std::fprintf(stderr, "tumble: %s\n", why.c_str());
+    }
     if (cmd.join) {
-        if (png_output(output))
-            throw io::BadInput("shards --join: PNG shards need no join: together they write " +
-                               output + ", each frame numbered as in the whole run");
-        std::printf("%s\n", join.c_str());
+        std::printf("%s\n", command_line(join).c_str());
         return kOk;
     }
+    const std::vector<std::string> shared = shared_options(cmd);
     for (int i = 0; i < cmd.count; ++i) {
         std::vector<std::string> words = {cmd.tumble,
                                           "render",
-                                          o.scene.empty() ? "default" : o.scene,
+                                          cmd.common.scene.empty() ? "default" : cmd.common.scene,
                                           "--frames",
                                           ranges[i].text(),
                                           "-o",
                                           shard_output(output, i)};
         words.insert(words.end(), shared.begin(), shared.end());
-        std::string line;
-        for (const std::string& w : words) line += (line.empty() ? "" : " ") + shell_word(w);
-        std::printf("%s\n", line.c_str());
+        std::printf("%s\n", command_line(words).c_str());
     }
-    if (!o.quiet && png_output(output))
-        std::fprintf(stderr,
-                     "tumble: PNG shards need no join: together they write %s, each frame "
-                     "numbered as in the whole run\n",
-                     output.c_str());
-    else if (!o.quiet)
-        std::fprintf(stderr, "tumble: then join them: %s\n", join.c_str());
+    if (!cmd.common.quiet && !png_output(output))
+        std::fprintf(stderr, "tumble: then join them: %s\n", command_line(join).c_str());
     return kOk;
 }
 
