@@ -39,6 +39,10 @@ enum class Integrator : std::uint8_t {
     Count // not an integrator: the number of rows
 };
 
+// Why an integrator cannot step a model ("the scene applies torques"), or empty if it can; a row
+// with no such limit has none.
+using RefusalFn = std::string (*)(const Model& model);
+
 struct IntegratorInfo {
     Integrator id;
     std::string_view name;      // as written in scene files and on the command line
@@ -46,6 +50,10 @@ struct IntegratorInfo {
     std::string_view conserves; // what it keeps exactly or bounded (docs/integrators.md)
     std::string_view summary;   // one line for `tumble explain` and --help
     IntegrateFn integrate;      // defined in integrator_<name>.cpp
+    // Cost of one body-step relative to symplectic_euler's, measured (docs/integrators.md, the
+    // ns / body-step column): the cost model with which "auto" compares plans (accuracy_plan.h).
+    double cost;
+    RefusalFn refuses = nullptr;
 };
 
 std::span<const IntegratorInfo> integrators();

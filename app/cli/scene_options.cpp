@@ -2,14 +2,49 @@
 
 #include "app/scene/scene_error.h"
 
+#include <cmath>
 #include <cstdio>
+#include <exception>
+#include <string>
 
 namespace tumble::app {
+namespace {
+
+// "R" or "R,P": positive numbers, rad and m.
+physics::Tolerance parse_tolerance(const std::string& text) {
+    const auto fail = [&] {
+        return SceneError("--tolerance", text,
+                          "expected a positive error bound R (rad and m), or R,P: rotation in "
+                          "rad, position in m (e.g. 1e-4 or 1e-4,1e-3)");
+    };
+    const std::size_t comma = text.find(',');
+    const auto number = [&](const std::string& part) {
+        std::size_t used = 0;
+        double v = 0.0;
+        try {
+            v = std::stod(part, &used);
+        } catch (const std::exception&) {
+            throw fail();
+        }
+        if (used != part.size() || !std::isfinite(v) || !(v > 0.0)) throw fail();
+        return v;
+    };
+    const double rotation = number(text.substr(0, comma));
+    const double position = comma == std::string::npos ? rotation : number(text.substr(comma + 1));
+    return {rotation, position};
+}
+
+} // namespace
 
 void add_scene_options(CLI::App* cmd, SceneOptions& o) {
     cmd->add_option("scene", o.scene,
                     "scene file, or a built-in scene name (default: the built-in default)");
-    cmd->add_option("--integrator", o.integrator, "override the scene's integrator");
+    cmd->add_option("--integrator", o.integrator,
+                    "override the scene's integrator (a name, or auto: see --tolerance)");
+    cmd->add_option("--tolerance", o.tolerance,
+                    "R[,P]: the largest error of each body over the run, rad (and m; default R): "
+                    "picks the cheapest integrator and step that meet it, or checks the one "
+                    "--integrator names (docs/accuracy.md)");
     cmd->add_option("--duration", o.duration, "override the scene's duration, s");
     cmd->add_option("--dt", o.dt, "override the scene's time step, s");
     cmd->add_option("--threads", o.threads,
@@ -25,12 +60,21 @@ Scene load_for_command(const SceneOptions& opts) {
         std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
     if (opts.integrator) {
         const auto id = physics::integrator_from_name(*opts.integrator);
-        if (!id)
-            throw SceneError("--integrator", *opts.integrator,
-                             "unknown integrator; valid integrators: " +
-                                 physics::integrator_names());
-        scene.world.integrator = *id;
+        if (!id && *opts.integrator != "auto")
+            throw SceneError(
+                "--integrator", *opts.integrator,
+                "unknown integrator; valid integrators: " + physics::integrator_names() + ", auto");
+        if (id) scene.world.integrator = *id;
+        scene.accuracy.auto_integrator = !id;
     }
+    if (opts.tolerance) {
+        scene.accuracy.tolerance = parse_tolerance(*opts.tolerance);
+        scene.accuracy.tolerance_place = "--tolerance";
+        if (!opts.integrator) scene.accuracy.auto_integrator = true;
+    }
+    if (scene.accuracy.auto_integrator && !scene.accuracy.tolerance)
+        throw SceneError("--integrator", "auto",
+                         "auto needs a tolerance: --tolerance R[,P] or world.tolerance");
     if (opts.duration) {
         if (!(*opts.duration > 0.0))
             throw SceneError("--duration", std::to_string(*opts.duration),

@@ -5,6 +5,7 @@
 #include "app/cli/subcommand.h"
 #include "app/run/progress.h"
 #include "app/study/analysis.h"
+#include "app/study/auto_check.h"
 #include "app/study/metrics.h"
 #include "app/study/plots.h"
 #include "app/study/report.h"
@@ -29,6 +30,7 @@ struct StudyCommand {
     std::string output = "study"; // folder for study.csv, study.json, report.md and plots/
     int threads = 0;              // 0: one per hardware thread
     bool quiet = false;
+    bool auto_check = false; // --auto: check "auto"'s plans against the exact answers
 };
 using Clock = std::chrono::steady_clock;
 
@@ -57,6 +59,12 @@ void energy_traces(Results& r, int threads) {
 }
 
 void print_summary(const Results& r, const std::string& dir) {
+    if (r.auto_checked) {
+        const AutoSummary s = summarise(r.auto_cases);
+        std::printf("auto (%d cases the estimate covers, of %d): estimate within 3x %d, "
+                    "tolerance met %d, cost <= 2x the grid's cheapest %d\n",
+                    s.covered, s.cases, s.within_3, s.meets, s.cost_within_2);
+    }
     std::printf("recommendation (orientation error, max over [0, T]):\n");
     for (const Recommendation& rec : r.recommendations) {
         if (!rec.row) {
@@ -107,6 +115,16 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     r.contact_stability = contact_stability_map(cmd.quick, r.threads);
     r.seconds_contacts = seconds_since(t2);
     energy_traces(r, r.threads);
+    if (cmd.auto_check) {
+        const Clock::time_point t3 = Clock::now();
+        if (!cmd.quiet)
+            std::fprintf(stderr, "tumble study: auto's plans, %zu tolerances per problem\n",
+                         auto_tolerances().size());
+        r.auto_cases = check_auto(problems(), r.rows, auto_tolerances(), cmd.quick, r.threads);
+        r.auto_checked = true;
+        if (!cmd.quiet)
+            std::fprintf(stderr, "tumble study: auto checked in %.1f s\n", seconds_since(t3));
+    }
 
     r.orders = fit_orders(r.rows);
     std::vector<std::string> names;
@@ -120,6 +138,7 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     write_json(dir / "study.json", r);
     write_contact_csv(dir / "contact_stability.csv", r);
     write_report(dir / "report.md", r);
+    if (r.auto_checked) write_text_atomic(dir / "auto.csv", auto_csv(r.auto_cases));
 }
 
 int run_study(const StudyCommand& cmd) {
@@ -156,6 +175,10 @@ Subcommand add_study_command(CLI::App& app) {
     st->add_option("--threads", cmd->threads, "worker threads (default: one per hardware thread)")
         ->check(CLI::PositiveNumber);
     st->add_flag("-q,--quiet", cmd->quiet, "no progress and no summary");
+    st->add_flag("--auto", cmd->auto_check,
+                 "also check integrator \"auto\" against the exact answers at tolerances 1e-2 "
+                 "to 1e-8: its estimate, whether it met them, its cost against the grid's "
+                 "cheapest (report.md's last section, auto.csv)");
     return {[st] { return st->parsed(); }, [cmd] { return run_study(*cmd); }};
 }
 

@@ -3,6 +3,7 @@
 // The format is documented field by field in docs/scene-format.md.
 #include "app/scene/camera_rig.h"
 #include "app/scene/chart_quantity.h"
+#include "physics/accuracy_plan.h"
 #include "physics/build.h"
 #include "render/scene_view.h"
 
@@ -57,6 +58,19 @@ struct RenderSettings {
     int trail_axis = -1; // 0, 1, 2: also trace the tip of this body axis
 };
 
+// Accuracy as a setting (docs/accuracy.md): world.integrator "auto" picks the cheapest integrator and
+// step that meet world.tolerance (app/run/accuracy_choice.h); a tolerance with a named integrator
+// is checked, not chosen for.
+struct Accuracy {
+    bool auto_integrator = false;
+    std::optional<physics::Tolerance> tolerance;
+    std::string tolerance_place; // where it was set ("/world/tolerance", "--tolerance"), for messages
+    // Set once "auto" is resolved (app/run/accuracy_choice.h): the plan, and the wall time of its
+    // pilot runs.
+    std::optional<physics::AccuracyPlan> plan;
+    double pilot_seconds = 0.0;
+};
+
 struct Scene {
     std::string source; // file path, or "builtin:<name>" for an embedded scene
     // ContentHash (app/scene/content_hash.h) of the scene's text and of each mesh file it read,
@@ -65,6 +79,7 @@ struct Scene {
     std::uint64_t content_hash = 0;
     std::string title;
     physics::WorldDef world;
+    Accuracy accuracy;
     double duration = 10.0; // s of simulated (and rendered) time
     std::vector<physics::BodyDef> bodies;
     std::vector<BodyLook> looks; // one per body

@@ -40,6 +40,22 @@ const char* kFov = "a vertical field of view in degrees, below 179";
 
 } // namespace
 
+// world.integrator: the registry's names and "auto" (accuracy as a setting, docs/accuracy.md).
+std::vector<std::string> integrator_choices() {
+    std::vector<std::string> names = split_list(physics::integrator_names());
+    names.push_back("auto");
+    return names;
+}
+
+const Table& tolerance() {
+    static const Table t{
+        "tolerance",
+        "the largest global error a run may make, per body, over its whole duration",
+        {{"rotation", positive(), "a positive orientation error in radians"},
+         {"position", positive(), "a positive position error in metres"}}};
+    return t;
+}
+
 const Table& world() {
     static const Table t{
         "world",
@@ -47,7 +63,10 @@ const Table& world() {
         {{"gravity", vec3(), "gravity [x, y, z] in m/s^2"},
          {"dt", positive(), "a positive time step in seconds"},
          {"duration", positive(), "a positive duration in seconds"},
-         {"integrator", one_of(split_list(physics::integrator_names())), "an integrator's name"},
+         {"integrator", one_of(integrator_choices()),
+          "an integrator's name, or \"auto\": the cheapest that meets world.tolerance"},
+         {"tolerance", any_of({positive(), object(tolerance)}),
+          "a positive error bound (rad and m), or {\"rotation\": rad, \"position\": m}"},
          {"sleeping", boolean(), "true or false: bodies at rest may sleep"},
          {"substeps", integer(0, 64), "contact substeps per step (0: automatic)"},
          {"iterations", integer(1, 64), "contact solve sweeps per substep, 1..64"},
@@ -58,13 +77,13 @@ const Table& world() {
 }
 
 const Table& light() {
-    static const Table t{"light",
-                         "the key light",
-                         {{"direction", vec3(), "the direction the light travels [x, y, z]"},
-                          {"color", color(), "a colour \"#rrggbb\" or [r, g, b] in [0, 1]"},
-                          {"ambient", non_negative(), "a non-negative ambient fraction"},
-                          {"angle", number_in(0.0, 20.0),
-                           "the light's angular diameter in degrees, 0 to 20"}}};
+    static const Table t{
+        "light",
+        "the key light",
+        {{"direction", vec3(), "the direction the light travels [x, y, z]"},
+         {"color", color(), "a colour \"#rrggbb\" or [r, g, b] in [0, 1]"},
+         {"ambient", non_negative(), "a non-negative ambient fraction"},
+         {"angle", number_in(0.0, 20.0), "the light's angular diameter in degrees, 0 to 20"}}};
     return t;
 }
 

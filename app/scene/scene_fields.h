@@ -10,6 +10,8 @@ namespace tumble::app::scene_fields {
 
 const Table& scene(); // the whole file
 const Table& world();
+const Table& tolerance(); // world.tolerance as an object
+std::vector<std::string> integrator_choices(); // world.integrator: the registry's names + "auto"
 const Table& render();
 const Table& light();
 const Table& chart();  // render.chart

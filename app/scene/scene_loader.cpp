@@ -17,17 +17,38 @@ namespace {
 constexpr int kFormatVersion = 1;
 namespace fields = scene_fields;
 
+// world.tolerance: one bound for both (rad and m), or {"rotation": rad, "position": m}.
+physics::Tolerance read_tolerance(JsonReader r) {
+    if (r.value().is_number()) {
+        const double both = r.positive("a positive tolerance");
+        return {both, both};
+    }
+    ObjectReader o(r, fields::tolerance());
+    const physics::Tolerance t{o.field("rotation").number(), o.field("position").number()};
+    o.finish();
+    return t;
+}
+
 void read_world(ObjectReader r, Scene& s) {
     if (auto g = r.optional("gravity")) s.world.gravity = read_vec3(*g);
     if (auto dt = r.optional("dt")) s.world.dt = dt->number();
     if (auto d = r.optional("duration")) s.duration = d->number();
     if (auto i = r.optional("integrator")) {
-        const auto id = physics::integrator_from_name(i->string());
-        if (!id)
+        const std::string name = i->string();
+        const auto id = physics::integrator_from_name(name);
+        if (!id && name != "auto")
             i->fail("unknown integrator " + describe_json(i->value()) +
-                    "; valid integrators: " + physics::integrator_names());
-        s.world.integrator = *id;
+                    "; valid integrators: " + physics::integrator_names() + ", auto");
+        if (id) s.world.integrator = *id;
+        s.accuracy.auto_integrator = !id;
     }
+    if (auto t = r.optional("tolerance")) {
+        s.accuracy.tolerance = read_tolerance(t->reader());
+        s.accuracy.tolerance_place = t->reader().path();
+    }
+    if (s.accuracy.auto_integrator && !s.accuracy.tolerance)
+        r.fail("world.integrator \"auto\" needs world.tolerance (a number, or {\"rotation\": "
+               "rad, \"position\": m}): the error it must meet");
     physics::ContactSettings& c = s.world.contact; // physics/contact_model.h
     if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
     if (auto v = r.optional("substeps")) c.substeps = v->integer();

@@ -1,6 +1,7 @@
 // report.md: the study as a person reads it, ending with the recommendation table.
 #include "app/study/metrics.h"
 #include "app/study/plots.h"
+#include "app/study/auto_check.h"
 #include "app/study/report.h"
 #include "physics/integrator.h"
 
@@ -254,6 +255,7 @@ void write_report(const std::filesystem::path& file, const Results& r) {
     stability_section(o, r);
     contact_section(o, r);
     recommendation_section(o, r);
+    if (r.auto_checked) o << "\n" << auto_markdown(r.auto_cases);
     write_text_atomic(file, o.str());
 }
 

@@ -2,6 +2,7 @@
 // The study's outputs: study.csv and study.json (every row), report.md (the Markdown report, ending
 // with the recommendation table) and, through study_plots.h, the PNG plots it links to.
 #include "app/study/analysis.h"
+#include "app/study/auto_check.h"
 #include "app/study/contact_stability.h"
 #include "app/study/runner.h"
 #include "app/study/stability.h"
@@ -25,6 +26,8 @@ struct Results {
     std::string energy_problem; // the problem and step of the energy-against-time plot
     double energy_dt = 0.0, energy_t_end = 0.0;
     std::vector<EnergyTrace> energy;
+    bool auto_checked = false;         // `--auto`: the plans of "auto" checked (auto_check.h)
+    std::vector<AutoCase> auto_cases;
     double seconds_grid = 0.0, seconds_stability = 0.0, seconds_contacts = 0.0;
     double seconds_total = 0.0;
     std::string machine; // CPU model and core count (/proc/cpuinfo)
