@@ -11,6 +11,7 @@
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
+#include "app/run/run_estimate.h"
 #include "app/run/simulation.h"
 #include "physics/diagnostics.h"
 
@@ -23,6 +24,7 @@ namespace {
 
 void add_render_options(CLI::App* r, RenderCommand& render) {
     add_scene_options(r, render.common);
+    add_error_estimate_options(r, render.common);
     r->add_option("-o,--output", render.output,
                   "out.mp4 | out.webm | out.gif | frames/ | frames/%06d.png | still.png (default: "
                   "<scene>.mp4)");
@@ -114,6 +116,8 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
     std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s), %s\n",
                  static_cast<long long>(r.frames), r.frames == 1 ? "" : "s", wall,
                  wall > 0 ? r.frames / wall : 0.0, describe_peak_memory().c_str());
+    for (const std::string& line : estimate_summary(sim))
+        std::fprintf(stderr, "tumble: %s\n", line.c_str());
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 
@@ -127,6 +131,7 @@ int run_render(const RenderCommand& command) {
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
+    start_error_estimate(sim, scene, cmd.common.threads);
     if (const std::string note = threads_note(sim, cmd.common.threads);
         !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());

@@ -10,6 +10,7 @@ namespace tumble::app::scene_fields {
 
 const Table& scene(); // the whole file
 const Table& world();
+const Table& error_estimate(); // world.error_estimate as an object
 const Table& render();
 const Table& light();
 const Table& chart();  // render.chart
