@@ -193,6 +193,24 @@ TEST(ErrorEstimateCli, BadOptionValuesNameTheOptionAndWhatWasExpected) {
     }
 }
 
+// A render continued from a checkpoint has no shadow run to continue: refused before any output
+// (exit 2); from t = 0 (--frames alone) the estimate is made as for the whole run.
+TEST(ErrorEstimateCli, ACheckpointHasNoShadowToContinue) {
+    const auto dir = scratch_dir();
+    write_text(dir / "drop.json", scene_with(""));
+    ASSERT_EQ(
+        run_tumble(dir, "simulate drop.json --checkpoint-every 30 --checkpoints ck -q").exit_code,
+        0);
+    const std::string render = "render drop.json --preview --frames 60:70 -o part/ ";
+    const CliResult r = run_tumble(dir, render + "--from-checkpoints ck --error-estimate");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--from-checkpoints: the error estimate"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "part"));
+    const CliResult whole = run_tumble(dir, render + "--error-estimate");
+    EXPECT_EQ(whole.exit_code, 0) << whole.err;
+    EXPECT_NE(whole.err.find("\"book\": end t = 1.15 s: "), std::string::npos) << whole.err;
+}
+
 TEST(ErrorEstimateCli, SceneFieldErrorsNameTheJsonPath) {
     const auto dir = scratch_dir();
     const struct {
