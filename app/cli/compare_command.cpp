@@ -46,6 +46,8 @@ void print_summary(const SideBySide& tiles, const render::FrameSink& sink, std::
         else
             std::fprintf(stderr, "tumble: %s diverged: %s\n", lane.integrator.c_str(),
                          lane.diverged.c_str());
+        for (const std::string& line : lane.estimate)
+            std::fprintf(stderr, "tumble: %s: %s\n", lane.integrator.c_str(), line.c_str());
     }
     std::fprintf(stderr, "tumble: wrote %s (%lld frames, %d x %d tiles of %dx%d)\n",
                  sink.describe().c_str(), static_cast<long long>(written), tiles.cols(),

@@ -6,6 +6,7 @@
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/study/contact_check.h"
+#include "physics/error_estimate.h"
 
 #include <cstdio>
 #include <memory>
@@ -97,6 +98,22 @@ void print_passes(const physics::Model& m) {
         "  check finite   on: a NaN or infinite state stops the run naming body and step\n");
 }
 
+// world.error_estimate or --error-estimate (physics/error_estimate.h), when on.
+void print_error_estimate(const Scene& scene, const physics::Model& m) {
+    const ErrorEstimateSettings& e = scene.error_estimate;
+    if (!e.on) return;
+    const physics::IntegratorInfo& info = physics::integrator_info(m.integrator);
+    std::printf("error estimate: on: step doubling, a shadow run at h/2 = %.6g s beside the run "
+                "(%s, order %d: e = (y_h - y_h/2) x %.4g), per moving body in rad and m, at the "
+                "end",
+                0.5 * m.dt, std::string(info.name).c_str(), info.order,
+                physics::richardson_factor(info.order));
+    for (std::size_t i = 0; i < e.times.size(); ++i)
+        std::printf("%s%g", i == 0 ? ", at t = " : ", ", e.times[i]);
+    std::printf("%s and its maximum; about 2x more stepping%s\n", e.times.empty() ? "" : " s",
+                m.passes.contacts ? "; a body's estimate stops at its first contact or sleep" : "");
+}
+
 // The contact stability map's cases this scene resembles, each run at the scene's settings
 // (app/study/contact_check.h); a case that fails is a warning.
 void print_contact_checks(const physics::Model& m, const physics::State& s) {
@@ -133,6 +150,7 @@ int run_explain(const SceneOptions& opts) {
     std::printf("time: %s\n", tl.describe().c_str());
     print_bodies(scene, sim.model);
     print_passes(sim.model);
+    print_error_estimate(scene, sim.model);
     print_contact_checks(sim.model, sim.state);
     return kOk;
 }
@@ -144,6 +162,7 @@ Subcommand add_explain_command(CLI::App& app) {
     CLI::App* e =
         app.add_subcommand("explain", "print the model that will run and which stages are on");
     add_scene_options(e, *opts);
+    add_error_estimate_options(e, *opts);
     return {[e] { return e->parsed(); }, [opts] { return run_explain(*opts); }};
 }
 

@@ -12,6 +12,7 @@
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
+#include "app/run/run_estimate.h"
 #include "app/run/simulation.h"
 #include "io/bad_input.h"
 #include "physics/diagnostics.h"
@@ -25,6 +26,7 @@ namespace {
 
 void add_render_options(CLI::App* r, RenderCommand& render) {
     add_scene_options(r, render.common);
+    add_error_estimate_options(r, render.common);
     r->add_option("-o,--output", render.output,
                   "out.mp4 | out.webm | out.gif | frames/ | frames/%06d.png | still.png (default: "
                   "<scene>.mp4)");
@@ -127,6 +129,8 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
     std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s), %s\n",
                  static_cast<long long>(r.frames), r.frames == 1 ? "" : "s", wall,
                  wall > 0 ? r.frames / wall : 0.0, describe_peak_memory().c_str());
+    for (const std::string& line : estimate_summary(sim))
+        std::fprintf(stderr, "tumble: %s\n", line.c_str());
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 
@@ -145,11 +149,17 @@ int run_render(const RenderCommand& command) {
     const FrameRange range = render_range(cmd, scene, tl); // --frames A:B, or the whole run
     const std::string output = output_name(cmd, scene);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
+    start_error_estimate(sim, scene, cmd.common.threads);
     if (const std::string note = threads_note(sim, cmd.common.threads);
         !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     // Checked before the output exists: a checkpoint of another run is refused leaving nothing.
     const std::optional<ResumePoint> resume = resume_point(cmd, scene, tl, sim, range);
+    if (resume && sim.estimate.estimator)
+        throw io::BadInput("--from-checkpoints: the error estimate (--error-estimate or "
+                           "world.error_estimate) steps a second run at h/2 from t = 0, which a "
+                           "checkpoint does not hold; render without --from-checkpoints, or with "
+                           "--no-error-estimate");
     // From before the output exists, so no signal can leave it half-written; on an exception the
     // sink's destructor deletes the partial output.
     InterruptGuard guard;

@@ -1,9 +1,13 @@
 #include "app/cli/scene_options.h"
 
 #include "app/scene/scene_error.h"
+#include "io/bad_input.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -54,6 +58,69 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o) {
     cmd->add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
 }
 
+void add_error_estimate_options(CLI::App* cmd, SceneOptions& o) {
+    cmd->add_flag(std::string("--error-estimate{") + kEstimateOn + "}", o.error_estimate,
+                  "estimate each moving body's error (rad, m) by step doubling and report it in "
+                  "the summary, the diagnostics CSV and the overlay; =T1,T2,... also at these "
+                  "times, s (about 3x the stepping cost; docs/error-estimate.md)");
+    cmd->add_flag("--no-error-estimate", o.no_error_estimate,
+                  "no error estimate, even if the scene asks for one");
+}
+
+namespace {
+
+// "1,2.5" -> {1, 2.5}: finite times >= 0 separated by commas.
+std::vector<double> parse_estimate_times(const std::string& list) {
+    std::vector<double> times;
+    for (std::size_t at = 0; at <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', at), list.size());
+        const std::string item = list.substr(at, comma - at);
+        char* end = nullptr;
+        errno = 0;
+        const double t = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || errno == ERANGE ||
+            !std::isfinite(t) || t < 0.0)
+            throw io::BadInput("--error-estimate=" + list +
+                               ": expected nothing, or =T1,T2,...: times in seconds >= 0 "
+                               "separated by commas (e.g. --error-estimate=1,2.5); got " +
+                               (item.empty() ? std::string("an empty time") : "\"" + item + "\""));
+        times.push_back(t);
+        at = comma + 1;
+    }
+    return times;
+}
+
+std::string seconds(double t) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g s", t);
+    return s;
+}
+
+// The estimate's settings from the options; every time within the run's duration.
+void apply_error_estimate(const SceneOptions& opts, Scene& scene) {
+    ErrorEstimateSettings& e = scene.error_estimate;
+    if (opts.no_error_estimate && opts.error_estimate)
+        throw io::BadInput("--error-estimate and --no-error-estimate: give one or the other");
+    if (opts.no_error_estimate) e = {};
+    if (opts.error_estimate) {
+        e.on = true;
+        if (*opts.error_estimate != kEstimateOn) {
+            e.times = parse_estimate_times(*opts.error_estimate);
+            e.place = "--error-estimate";
+        }
+    }
+    for (std::size_t i = 0; i < e.times.size(); ++i) {
+        if (e.times[i] <= scene.duration) continue;
+        const std::string what = "t = " + seconds(e.times[i]) + " is after the end of the run (" +
+                                 seconds(scene.duration) + (opts.duration ? ", --duration)" : ")");
+        if (e.place == "--error-estimate")
+            throw io::BadInput("--error-estimate=" + *opts.error_estimate + ": " + what);
+        throw SceneError(scene.source, e.place + "/" + std::to_string(i), what);
+    }
+}
+
+} // namespace
+
 Scene load_for_command(const SceneOptions& opts) {
     Scene scene = load_scene_argument(opts.scene);
     for (const std::string& w : scene.warnings)
@@ -87,6 +154,7 @@ Scene load_for_command(const SceneOptions& opts) {
                              "expected a positive time step in seconds");
         scene.world.dt = *opts.dt;
     }
+    apply_error_estimate(opts, scene);
     return scene;
 }
 

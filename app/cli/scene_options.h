@@ -18,14 +18,23 @@ struct SceneOptions {
     std::optional<double> dt;
     int threads = 1; // physics threads for the contact stage (same states for any count)
     bool quiet = false;
+    // --error-estimate[=T1,T2,...] (kEstimateOn without times) and --no-error-estimate; unset:
+    // the scene's world.error_estimate.
+    std::optional<std::string> error_estimate;
+    bool no_error_estimate = false;
 };
+
+inline constexpr const char* kEstimateOn = "on";
 
 // Registers the scene argument, --integrator, --tolerance, --duration, --dt, --threads and --quiet.
 void add_scene_options(CLI::App* cmd, SceneOptions& o);
 
+// Registers --error-estimate[=T1,T2,...] and --no-error-estimate (render, simulate, explain).
+void add_error_estimate_options(CLI::App* cmd, SceneOptions& o);
+
 // Loads the scene, prints its warnings, and applies the overrides (integrator, tolerance, duration,
-// dt).
-// Throws SceneError.
+// dt, the error estimate). Throws SceneError, naming the option or the JSON path of an estimate
+// time outside the run.
 Scene load_for_command(const SceneOptions& opts);
 
 } // namespace tumble::app

@@ -11,6 +11,7 @@
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/progress.h"
+#include "app/run/run_estimate.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/run/trajectory_writer.h"
@@ -80,6 +81,8 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
     std::fprintf(stderr, "tumble: %s: %s%lld steps of %.9g s, %s; wrote %s\n", scene.source.c_str(),
                  interrupted ? "interrupted after " : "", static_cast<long long>(sim.state.step), h,
                  describe_peak_memory().c_str(), files.c_str());
+    for (const std::string& line : estimate_summary(sim))
+        std::fprintf(stderr, "tumble: %s\n", line.c_str());
     if (interrupted && cmd.output != "-")
         std::fprintf(stderr,
                      "tumble: a trajectory cut short is kept apart: '%s' is as it was before\n",
@@ -94,6 +97,7 @@ int run_simulate(const SimulateCommand& cmd) {
     if (cmd.fps) scene.render.fps = *cmd.fps; // as `tumble render --fps`: the same frame times
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
+    start_error_estimate(sim, scene, cmd.common.threads);
     for (const std::string& note : {tl.adjustment_note(), threads_note(sim, cmd.common.threads)})
         if (!note.empty() && !cmd.common.quiet)
             std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
@@ -103,7 +107,8 @@ int run_simulate(const SimulateCommand& cmd) {
         if (!path.empty()) remove_stale_temporaries_for(path, cmd.common.quiet);
     InterruptGuard guard; // from before the files exist: no signal can leave them half-written
     std::optional<TrajectoryWriter> out;
-    if (!cmd.output.empty()) out.emplace(cmd.output, diagnostics, scene);
+    if (!cmd.output.empty())
+        out.emplace(cmd.output, diagnostics, scene, sim.estimate.estimator.get());
     const std::int64_t total = tl.end_step(); // the last row at t = duration
     // Checkpoints at frames K, 2K, ... of the video (frame k after k * steps_per_frame steps).
     const std::int64_t checkpoint_steps = std::int64_t{cmd.checkpoint_every} * tl.steps_per_frame;
@@ -142,6 +147,7 @@ Subcommand add_simulate_command(CLI::App& app) {
     CLI::App* s = app.add_subcommand(
         "simulate", "step a scene without rendering; write states and diagnostics as CSV");
     add_scene_options(s, cmd->common);
+    add_error_estimate_options(s, cmd->common);
     s->add_option("-o,--output", cmd->output,
                   "states CSV, or - for standard output (diagnostics go to "
                   "<stem>.diagnostics.csv); a run cut short by Ctrl-C goes to "

@@ -89,6 +89,8 @@ bool FrameSource::next(render::SceneView& view) {
                             : physics::diagnose_body(sim_.model, sim_.state, body);
         info.initial = body < 0 ? initial_ : overlay_initial_;
         if (body >= 0) info.subject = scene_.render.overlay_body.name;
+        if (sim_.estimate.estimator)
+            info.estimate = estimate_overlay(*sim_.estimate.estimator, body);
         overlay_lines(info, view.overlay);
         if (scene_.render.vectors) view.overlay.emplace_back(VectorArrows::legend());
     } else {

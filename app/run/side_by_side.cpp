@@ -41,6 +41,7 @@ SideBySide::SideBySide(const Scene& scene, const std::vector<physics::Integrator
         lanes_[i].scene = scene;
         lanes_[i].scene.world.integrator = methods[i];
         lanes_[i].sim = make_simulation(lanes_[i].scene, tl.h, threads);
+        start_error_estimate(lanes_[i].sim, lanes_[i].scene, threads);
     }
     // One chart scale for every tile: the same value at the same height in each, so one
     // method's drift is seen against another's flat line.
@@ -92,8 +93,10 @@ std::vector<SideBySide::LaneResult> SideBySide::results() const {
         r.integrator = std::string(physics::integrator_info(lane.sim.model.integrator).name);
         r.diverged = lane.diverged;
         r.initial_energy = lane.frames->initial().energy();
-        if (r.diverged.empty())
+        if (r.diverged.empty()) {
             r.energy = physics::diagnose(lane.sim.model, lane.sim.state).energy();
+            r.estimate = estimate_summary(lane.sim);
+        }
         out.push_back(std::move(r));
     }
     return out;

@@ -42,6 +42,7 @@ class SideBySide {
         std::string integrator;
         double initial_energy = 0.0, energy = 0.0; // J, when it did not diverge
         std::string diverged;                      // the divergence's message, if it did
+        std::vector<std::string> estimate;         // its error estimate's summary, when on
     };
     std::vector<LaneResult> results() const;
     int cols() const { return cols_; }

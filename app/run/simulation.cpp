@@ -6,7 +6,7 @@ namespace tumble::app {
 
 Simulation make_simulation(const Scene& scene, double dt, int threads) {
     CheckedStart start = build_checked(scene, dt);
-    Simulation sim{std::move(start.model), std::move(start.state), nullptr, scene.source, {}};
+    Simulation sim{std::move(start.model), std::move(start.state), nullptr, scene.source, {}, {}};
     for (const BodyLook& look : scene.looks) sim.body_names.push_back(look.name);
     sim.workspace =
         std::make_unique<physics::StepWorkspace>(sim.model.passes.contacts ? threads : 1);
@@ -16,6 +16,10 @@ Simulation make_simulation(const Scene& scene, double dt, int threads) {
 void Simulation::step() {
     try {
         physics::step(model, state, *workspace);
+        if (estimate.estimator) advance_error_estimate(*this);
+    } catch (const physics::ShadowDivergenceError& e) {
+        throw physics::ShadowDivergenceError(e, e.main_step,
+                                             source + ": " + with_body_names(body_names, e.what()));
     } catch (const physics::DivergenceError& e) {
         throw physics::DivergenceError(e.body, e.step, e.quantity,
                                        source + ": " + with_body_names(body_names, e.what()));

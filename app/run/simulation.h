@@ -1,5 +1,6 @@
 #pragma once
 // A scene made ready to step: the physics model, its initial state and the step's workspace.
+#include "app/run/run_estimate.h"
 #include "app/scene/scene.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -19,9 +20,12 @@ struct Simulation {
     std::unique_ptr<physics::StepWorkspace> workspace;
     std::string source;                  // the scene's file, named in the message of a divergence
     std::vector<std::string> body_names; // as the scene names them, in the same message
+    // The error estimate, when start_error_estimate() turned it on (app/run/run_estimate.h).
+    SimulationEstimate estimate;
 
-    // One physics step. Throws physics::DivergenceError, its message starting with `source` and
-    // naming the body as the scene does (`body 0 "rocket"`).
+    // One physics step (and the estimate's shadow steps). Throws physics::DivergenceError (or
+    // physics::ShadowDivergenceError), its message starting with `source` and naming the body as
+    // the scene does (`body 0 "rocket"`).
     void step();
 };
 

@@ -106,14 +106,19 @@ class Fields {
     std::size_t k_ = 0;
 };
 
+// The header, or with `more` the header followed by columns whose names start with `more` (the
+// error estimate's, which the reader skips).
 template <class Row, class ParseRow>
-std::vector<Row> read_table(const std::filesystem::path& path, const char* header, ParseRow parse) {
+std::vector<Row> read_table(const std::filesystem::path& path, const char* header, ParseRow parse,
+                            const std::string& more = "") {
     CsvText csv(read_input_file(path, "trajectory"), path.string());
     Line line;
     if (!csv.next(line)) csv.fail(1, std::string("expected the header line ") + header);
     std::string got;
     for (const std::string& f : line.fields) got += (got.empty() ? "" : ",") + f;
-    if (got != header) csv.fail(1, std::string("expected the header line ") + header);
+    const std::string base = header;
+    const bool extended = !more.empty() && got.starts_with(base + "," + more);
+    if (got != header && !extended) csv.fail(1, std::string("expected the header line ") + header);
     const std::size_t columns = line.fields.size();
     std::vector<Row> rows;
     while (csv.next(line)) {
@@ -148,17 +153,20 @@ Trajectory read_trajectory(const std::filesystem::path& states,
 }
 
 std::vector<DiagnosticsRow> read_diagnostics(const std::filesystem::path& diagnostics) {
-    return read_table<DiagnosticsRow>(diagnostics, kDiagnosticsHeader, [](Fields& f) {
-        DiagnosticsRow r;
-        r.step = f.integer();
-        r.t = f.number();
-        r.kinetic = f.number();
-        r.potential = f.number();
-        r.energy = f.number();
-        r.p = f.vec3();
-        r.l = f.vec3();
-        return r;
-    });
+    return read_table<DiagnosticsRow>(
+        diagnostics, kDiagnosticsHeader,
+        [](Fields& f) {
+            DiagnosticsRow r;
+            r.step = f.integer();
+            r.t = f.number();
+            r.kinetic = f.number();
+            r.potential = f.number();
+            r.energy = f.number();
+            r.p = f.vec3();
+            r.l = f.vec3();
+            return r;
+        },
+        "err_");
 }
 
 } // namespace tumble::app

@@ -35,10 +35,15 @@ void print_row(std::FILE* out, const StateRow& r) {
                  r.w.x(), r.w.y(), r.w.z());
 }
 
-void print_row(std::FILE* out, const DiagnosticsRow& r) {
-    std::fprintf(out, "%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+void print_fields(std::FILE* out, const DiagnosticsRow& r) {
+    std::fprintf(out, "%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g",
                  static_cast<long long>(r.step), r.t, r.kinetic, r.potential, r.energy, r.p.x(),
                  r.p.y(), r.p.z(), r.l.x(), r.l.y(), r.l.z());
+}
+
+void print_row(std::FILE* out, const DiagnosticsRow& r) {
+    print_fields(out, r);
+    std::fputc('\n', out);
 }
 
 } // namespace tumble::app

@@ -43,5 +43,7 @@ inline constexpr const char* kDiagnosticsHeader =
 // One CSV line each (%.17g: doubles round-trip exactly; the name quoted as RFC 4180 says).
 void print_row(std::FILE* out, const StateRow& row);
 void print_row(std::FILE* out, const DiagnosticsRow& row);
+// The diagnostics row's fields without the end of line (more columns may follow).
+void print_fields(std::FILE* out, const DiagnosticsRow& row);
 
 } // namespace tumble::app

@@ -2,6 +2,7 @@
 
 #include "io/bad_input.h"
 
+#include "app/run/run_estimate.h"
 #include "app/run/trajectory_rows.h"
 
 #include <cerrno>
@@ -42,8 +43,9 @@ std::string interrupted_path_for(const std::string& path) {
 }
 
 TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
-                                   const std::string& diagnostics_path, const Scene& scene)
-    : scene_(scene), states_(states_path) {
+                                   const std::string& diagnostics_path, const Scene& scene,
+                                   const physics::ErrorEstimator* estimate)
+    : scene_(scene), estimate_(estimate), states_(states_path) {
     if (!diagnostics_path.empty()) diags_.emplace(diagnostics_path);
     // A run cut short: "s.interrupted.csv" and, beside it, "s.interrupted.diagnostics.csv"
     // (or "d.interrupted.csv" for diagnostics the user named d.csv).
@@ -54,7 +56,8 @@ TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
     std::fprintf(states_file_, "%s\n", kStatesHeader);
     if (diags_) {
         diags_file_ = open_or_throw(*diags_);
-        std::fprintf(diags_file_, "%s\n", kDiagnosticsHeader);
+        std::fprintf(diags_file_, "%s%s\n", kDiagnosticsHeader,
+                     estimate_ ? estimate_csv_header(*estimate_).c_str() : "");
     }
 }
 
@@ -66,10 +69,22 @@ TrajectoryWriter::~TrajectoryWriter() {
 void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
     for (int i = 0; i < m.body_count(); ++i)
         print_row(states_file_, state_row(m, s, i, scene_.looks[i].name));
-    if (diags_file_) print_row(diags_file_, diagnostics_row(m, s));
+    if (!diags_file_) return;
+    if (!estimate_) {
+        print_row(diags_file_, diagnostics_row(m, s));
+        return;
+    }
+    if (estimate_->main_step() != s.step)
+        throw std::logic_error("the error estimate is at step " +
+                               std::to_string(estimate_->main_step()) + ", the row at step " +
+                               std::to_string(s.step));
+    print_fields(diags_file_, diagnostics_row(m, s));
+    print_estimate_csv(diags_file_, *estimate_);
+    std::fputc('\n', diags_file_);
 }
 
 void TrajectoryWriter::write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics) {
+    if (estimate_) throw std::logic_error("rows made earlier carry no error estimate");
     for (const StateRow& r : rows) print_row(states_file_, r);
     if (diags_file_) print_row(diags_file_, diagnostics);
 }

@@ -7,12 +7,17 @@
 //   <diagnostics>                one row per sampled step (by default <stem>.diagnostics.csv):
 //       step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz
 //     energies in J, P in kg m/s, L (world, about the origin) in kg m^2/s.
+//     With an error estimate (app/run/run_estimate.h), then per dynamic body i:
+//       err_rad_<i>,err_m_<i>   its estimated global error at t: orientation (rad) and centre of
+//     mass (m), by step doubling (physics/error_estimate.h); empty once it no longer holds (the
+//     body met a contact or fell asleep: the run summary says when).
 // An output may be "-" (standard output) or a FIFO: rows then stream out as they are computed
 // (io/output_target.h). A run cut short is kept apart from a complete one: finish_interrupted()
 // stores it as <stem>.interrupted.csv, so an existing complete file of the same name survives.
 #include "app/run/trajectory_rows.h"
 #include "app/scene/scene.h"
 #include "io/atomic_file.h"
+#include "physics/error_estimate.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
@@ -25,9 +30,10 @@ namespace tumble::app {
 
 class TrajectoryWriter {
   public:
-    // An empty `diagnostics_path` writes no diagnostics.
+    // An empty `diagnostics_path` writes no diagnostics. With `estimate`, the diagnostics rows
+    // carry its columns, as it stands when write(model, state) is called (at the state's step).
     TrajectoryWriter(const std::string& states_path, const std::string& diagnostics_path,
-                     const Scene& scene);
+                     const Scene& scene, const physics::ErrorEstimator* estimate = nullptr);
     ~TrajectoryWriter();
     void write(const physics::Model& model, const physics::State& state);
     // Rows made earlier (app/run/trajectory_rows.h), e.g. only some bodies at sampled times.
@@ -41,6 +47,7 @@ class TrajectoryWriter {
   private:
     std::vector<std::string> close_and_commit(bool interrupted);
     const Scene& scene_;
+    const physics::ErrorEstimator* estimate_;
     io::AtomicFile states_;
     std::optional<io::AtomicFile> diags_;
     std::string interrupted_diagnostics_; // where finish_interrupted() puts the diagnostics

@@ -71,6 +71,14 @@ struct Accuracy {
     double pilot_seconds = 0.0;
 };
 
+// world.error_estimate / --error-estimate: estimate each dynamic body's global error by step
+// doubling (physics/error_estimate.h) and report it at the end and at `times`.
+struct ErrorEstimateSettings {
+    bool on = false;
+    std::vector<double> times; // s, besides the end; each reported at the nearest step
+    std::string place; // where the times were given, for errors ("/world/error_estimate/times")
+};
+
 struct Scene {
     std::string source; // file path, or "builtin:<name>" for an embedded scene
     // ContentHash (app/scene/content_hash.h) of the scene's text and of each mesh file it read,
@@ -89,6 +97,7 @@ struct Scene {
     // Things worth telling the user that do not stop the run (e.g. bodies starting deeply
     // interpenetrated); commands print them to stderr as "tumble: warning: ...".
     std::vector<std::string> warnings;
+    ErrorEstimateSettings error_estimate;
     RenderSettings render;
 };
 

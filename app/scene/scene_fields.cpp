@@ -72,7 +72,19 @@ const Table& world() {
          {"iterations", integer(1, 64), "contact solve sweeps per substep, 1..64"},
          {"restitution_threshold", non_negative(), "an impact speed >= 0 in m/s"},
          {"parallel_min_bodies", integer(0, 1 << 30),
-          "a body count >= 0 from which --threads is used"}}};
+          "a body count >= 0 from which --threads is used"},
+         {"error_estimate", any_of({boolean(), object(error_estimate)}),
+          "true, false or {\"times\": [t1, t2, ...]}: estimate each body's error (step "
+          "doubling)"}}};
+    return t;
+}
+
+const Table& error_estimate() {
+    static const Table t{
+        "error_estimate",
+        "each dynamic body's estimated global error, at the end and at these times",
+        {{"times", array_of(non_negative(), "a time >= 0 in seconds, within the duration"),
+          "a list of times in seconds at which to report the estimate (besides the end)", true}}};
     return t;
 }
 

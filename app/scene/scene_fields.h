@@ -12,6 +12,7 @@ const Table& scene(); // the whole file
 const Table& world();
 const Table& tolerance(); // world.tolerance as an object
 std::vector<std::string> integrator_choices(); // world.integrator: the registry's names + "auto"
+const Table& error_estimate(); // world.error_estimate as an object
 const Table& render();
 const Table& light();
 const Table& chart();  // render.chart

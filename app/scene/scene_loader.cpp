@@ -9,6 +9,7 @@
 #include "app/scene/scene_values.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace tumble::app {
@@ -27,6 +28,33 @@ physics::Tolerance read_tolerance(JsonReader r) {
     const physics::Tolerance t{o.field("rotation").number(), o.field("position").number()};
     o.finish();
     return t;
+}
+
+// world.error_estimate: true, or {"times": [1, 2.5]} (times within the duration, read before it).
+void read_error_estimate(FieldValue& v, Scene& s) {
+    ErrorEstimateSettings& e = s.error_estimate;
+    if (v.value().is_boolean()) {
+        e.on = v.boolean();
+        return;
+    }
+    if (!v.value().is_object())
+        v.fail("expected true, false or {\"times\": [t1, t2, ...]}, got " +
+               describe_json(v.value()));
+    ObjectReader r(v.reader(), fields::error_estimate());
+    e.on = true;
+    const FieldValue times = r.field("times");
+    e.place = times.reader().path();
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const FieldValue t = times.at(i);
+        e.times.push_back(t.number());
+        if (e.times.back() > s.duration) {
+            char duration[32];
+            std::snprintf(duration, sizeof duration, "%g", s.duration);
+            t.fail("expected a time within the duration (" + std::string(duration) + " s), got " +
+                   describe_json(t.value()) + " s");
+        }
+    }
+    r.finish();
 }
 
 void read_world(ObjectReader r, Scene& s) {
@@ -55,6 +83,7 @@ void read_world(ObjectReader r, Scene& s) {
     if (auto v = r.optional("iterations")) c.iterations = v->integer();
     if (auto v = r.optional("restitution_threshold")) c.restitution_threshold = v->number();
     if (auto v = r.optional("parallel_min_bodies")) c.parallel_min_bodies = v->integer();
+    if (auto v = r.optional("error_estimate")) read_error_estimate(*v, s);
     r.finish();
 }
 

@@ -13,10 +13,22 @@ void set_line(std::string& line, const char* format, Args... args) {
     line.assign(buffer);
 }
 
+// "err <= 3.0e-06 rad, 2.0e-09 m (step doubling)", or how many bodies it no longer holds for
+// (contacts, sleep), within the panel's width.
+void estimate_line(const OverlayEstimate& e, std::string& line) {
+    if (e.holding == 0)
+        set_line(line, "err n/a: contact or sleep (step doubling)");
+    else if (e.not_holding == 0)
+        set_line(line, "err <= %.1e rad, %.1e m (step doubling)", e.rotation, e.position);
+    else
+        set_line(line, "err <= %.1e rad, %.1e m; n/a for %d", e.rotation, e.position,
+                 e.not_holding);
+}
+
 } // namespace
 
 void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
-    lines.resize(o.subject.empty() ? 5 : 6);
+    lines.resize((o.subject.empty() ? 5 : 6) + (o.estimate.on ? 1 : 0));
     const double e0 = o.initial.energy(), e = o.now.energy();
     // Relative drift when the energy is not near zero, absolute otherwise.
     const bool relative = std::abs(e0) > 1e-12;
@@ -36,6 +48,7 @@ void overlay_lines(const OverlayInfo& o, std::vector<std::string>& lines) {
     if (!o.subject.empty())
         set_line(lines[5], "(E, p of body \"%s\"; L its spin about its centre)",
                  std::string(o.subject).c_str());
+    if (o.estimate.on) estimate_line(o.estimate, lines.back());
 }
 
 } // namespace tumble::app

@@ -12,6 +12,14 @@
 
 namespace tumble::app {
 
+// The error estimate's line (physics/error_estimate.h): the largest estimate over the bodies whose
+// estimate holds, and how many bodies it no longer holds for (contacts, sleep).
+struct OverlayEstimate {
+    bool on = false;
+    double rotation = 0.0, position = 0.0; // rad, m
+    int holding = 0, not_holding = 0;
+};
+
 struct OverlayInfo {
     double t = 0.0;        // s
     std::int64_t step = 0; // steps taken since t = 0
@@ -21,6 +29,7 @@ struct OverlayInfo {
     // Whose numbers they are: empty for the scene's sums (L about the origin), else a body's
     // name (its own energy, momentum and spin L about its centre of mass).
     std::string_view subject;
+    OverlayEstimate estimate; // a line of its own when on
 };
 
 // Replaces `lines` (reusing their storage) with the overlay text.

@@ -48,5 +48,27 @@ TEST(OverlayText, FieldsKeepTheirWidth) {
     EXPECT_LE(widest, 46u); // was 52 characters
 }
 
+// The error estimate's line (--error-estimate): the largest estimate of the bodies it holds for,
+// how many it no longer holds for, and no wider than the rest of the panel.
+TEST(OverlayText, ErrorEstimateLine) {
+    std::vector<std::string> lines;
+    OverlayInfo o = info(4.108047573, 0.0, physics::Vec3(0.0, 0.0, -0.0331));
+    overlay_lines(o, lines);
+    ASSERT_EQ(lines.size(), 5u); // off: no line
+    o.estimate = {true, 3.04e-6, 2e-9, 1, 0};
+    overlay_lines(o, lines);
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[5], "err <= 3.0e-06 rad, 2.0e-09 m (step doubling)");
+    o.estimate = {true, 3.04e-6, 2e-9, 1, 3};
+    overlay_lines(o, lines);
+    EXPECT_EQ(lines[5], "err <= 3.0e-06 rad, 2.0e-09 m; n/a for 3");
+    o.estimate = {true, 0.0, 0.0, 0, 3};
+    overlay_lines(o, lines);
+    EXPECT_EQ(lines[5], "err n/a: contact or sleep (step doubling)");
+    o.estimate = {true, 3.1, 2e-9, 1, 0}; // an estimate of pi rad or more: still the same width
+    overlay_lines(o, lines);
+    for (const std::string& line : lines) EXPECT_LE(line.size(), 46u) << line;
+}
+
 } // namespace
 } // namespace tumble::app
