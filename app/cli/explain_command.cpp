@@ -3,6 +3,7 @@
 #include "app/cli/failure.h"
 #include "app/cli/scene_options.h"
 #include "app/cli/subcommand.h"
+#include "app/run/accuracy_choice.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/study/contact_check.h"
@@ -139,7 +140,8 @@ void print_contact_checks(const physics::Model& m, const physics::State& s) {
 }
 
 int run_explain(const SceneOptions& opts) {
-    const Scene scene = load_for_command(opts);
+    Scene scene = load_for_command(opts);
+    resolve_auto_integrator(scene);
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     const Simulation sim = make_simulation(scene, tl.h);
     std::printf("scene: %s%s%s\n", scene.source.c_str(), scene.title.empty() ? "" : " - ",
@@ -150,6 +152,11 @@ int run_explain(const SceneOptions& opts) {
     std::printf("time: %s\n", tl.describe().c_str());
     print_bodies(scene, sim.model);
     print_passes(sim.model);
+    for (const std::string& line : describe_choice(scene, false)) std::printf("%s\n", line.c_str());
+    if (scene.accuracy.tolerance && !scene.accuracy.plan)
+        std::printf("tolerance: %.3g rad / %.3g m, checked after the run by the error estimate "
+                    "(the integrator is the scene's; \"auto\" would choose one)\n",
+                    scene.accuracy.tolerance->rotation, scene.accuracy.tolerance->position);
     print_error_estimate(scene, sim.model);
     print_contact_checks(sim.model, sim.state);
     return kOk;

@@ -8,6 +8,7 @@
 #include "app/cli/render_setup.h"
 #include "app/cli/shard_setup.h"
 #include "app/cli/subcommand.h"
+#include "app/run/accuracy_choice.h"
 #include "app/run/auto_camera.h"
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
@@ -129,8 +130,11 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
     std::fprintf(stderr, "tumble: %lld frame%s in %.2f s wall (%.1f frames/s), %s\n",
                  static_cast<long long>(r.frames), r.frames == 1 ? "" : "s", wall,
                  wall > 0 ? r.frames / wall : 0.0, describe_peak_memory().c_str());
+    for (const std::string& line : describe_choice(scene, true))
+        std::fprintf(stderr, "tumble: %s\n", line.c_str());
     for (const std::string& line : estimate_summary(sim))
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
+    report_tolerance(scene, sim);
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
 }
 
@@ -142,6 +146,7 @@ int run_render(const RenderCommand& command) {
     RenderCommand cmd = command;
     Scene scene = load_for_command(cmd.common);
     apply_render_overrides(cmd, scene);
+    resolve_auto_integrator(scene); // world.integrator "auto": for these frame times
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());

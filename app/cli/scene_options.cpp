@@ -17,9 +17,9 @@ namespace {
 // "R" or "R,P": positive numbers, rad and m.
 physics::Tolerance parse_tolerance(const std::string& text) {
     const auto fail = [&] {
-        return SceneError("--tolerance", text,
-                          "expected a positive error bound R (rad and m), or R,P: rotation in "
-                          "rad, position in m (e.g. 1e-4 or 1e-4,1e-3)");
+        return io::BadInput("--tolerance " + text +
+                            ": expected a positive error bound R (rad and m), or R,P: rotation in "
+                            "rad, position in m (e.g. 1e-4 or 1e-4,1e-3)");
     };
     const std::size_t comma = text.find(',');
     const auto number = [&](const std::string& part) {
@@ -155,6 +155,14 @@ Scene load_for_command(const SceneOptions& opts) {
         scene.world.dt = *opts.dt;
     }
     apply_error_estimate(opts, scene);
+    if (scene.accuracy.tolerance) { // a tolerance is met, and checked, through the estimate
+        if (opts.no_error_estimate)
+            throw io::BadInput("--no-error-estimate: the tolerance (" +
+                               scene.accuracy.tolerance_place +
+                               ") is chosen for and checked by the error estimate; give one or "
+                               "the other");
+        scene.error_estimate.on = true;
+    }
     return scene;
 }
 

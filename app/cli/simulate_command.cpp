@@ -8,6 +8,7 @@
 #include "app/cli/stale_temporaries.h"
 #include "app/cli/subcommand.h"
 #include "app/cluster/checkpoint_store.h"
+#include "app/run/accuracy_choice.h"
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/progress.h"
@@ -81,8 +82,11 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
     std::fprintf(stderr, "tumble: %s: %s%lld steps of %.9g s, %s; wrote %s\n", scene.source.c_str(),
                  interrupted ? "interrupted after " : "", static_cast<long long>(sim.state.step), h,
                  describe_peak_memory().c_str(), files.c_str());
+    for (const std::string& line : describe_choice(scene, true))
+        std::fprintf(stderr, "tumble: %s\n", line.c_str());
     for (const std::string& line : estimate_summary(sim))
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
+    report_tolerance(scene, sim);
     if (interrupted && cmd.output != "-")
         std::fprintf(stderr,
                      "tumble: a trajectory cut short is kept apart: '%s' is as it was before\n",
@@ -95,6 +99,7 @@ int run_simulate(const SimulateCommand& cmd) {
                            "--checkpoint-every K (checkpoints only), or both");
     Scene scene = load_for_command(cmd.common);
     if (cmd.fps) scene.render.fps = *cmd.fps; // as `tumble render --fps`: the same frame times
+    resolve_auto_integrator(scene);           // world.integrator "auto": for these frame times
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
     start_error_estimate(sim, scene, cmd.common.threads);

@@ -123,4 +123,12 @@ ToleranceCheck check_tolerance(const physics::Tolerance& tol,
     return r;
 }
 
+void report_tolerance(const Scene& scene, const Simulation& sim) {
+    if (!scene.accuracy.tolerance || !sim.estimate.estimator) return;
+    const auto bodies = sim.estimate.estimator->bodies();
+    const ToleranceCheck c =
+        check_tolerance(*scene.accuracy.tolerance, {bodies.begin(), bodies.end()}, sim.body_names);
+    for (const std::string& line : c.lines) std::fprintf(stderr, "tumble: %s\n", line.c_str());
+}
+
 } // namespace tumble::app

@@ -31,4 +31,10 @@ ToleranceCheck check_tolerance(const physics::Tolerance& tol,
                                const std::vector<physics::BodyEstimate>& estimate,
                                const std::vector<std::string>& body_names);
 
+struct Simulation;
+
+// After a run with a tolerance: prints check_tolerance()'s lines to stderr ("tumble: tolerance ...
+// met", or "tumble: warning: ..." naming body and amount). Nothing without a tolerance.
+void report_tolerance(const Scene& scene, const Simulation& sim);
+
 } // namespace tumble::app
