@@ -61,8 +61,8 @@ class FreeRotation {
     bool is_jacobi() const { return regime_ >= FreeRegime::AroundLargestAxis; }
     void setup_jacobi(int lo, int mid, int hi);
     struct JacobiPoint {
-        Vec3 m;     // body momentum, (p, q, r) frame
-        double phi; // angle about L of the invariant frame (section 3.3), rad
+        Eigen::Matrix<long double, 3, 1> m; // body momentum, (p, q, r) frame
+        long double phi; // angle about L of the invariant frame (section 3.3), rad
     };
     JacobiPoint jacobi_point(double t) const;
     FreeState precession_state(double t) const;
@@ -96,7 +96,7 @@ class FreeRotation {
     Real r0_ = 0;                    // u at t = 0, in [-K, K]
     Real Pi0_ = 0;                   // Pi(n; am r0, k)
     Real phi_rate_ = 0, phi_pi_ = 0; // phi(t) = phi_rate t + phi_pi (Pi(am u) - Pi0)
-    Mat3 W_ = Mat3::Identity();      // invariant frame, W e_z = L / |L| (section 3.3)
+    Eigen::Matrix<Real, 3, 3> B0t_; // B(m0)^T: the invariant frame W = R0 P B(m0)^T (section 3.3)
 };
 
 } // namespace tumble::physics
