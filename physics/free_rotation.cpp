@@ -170,7 +170,8 @@ void FreeRotation::setup_jacobi(int lo, int mid, int hi) {
     phi_rate_ = L_norm_ / Ir;
     phi_pi_ = L_norm_ * (Ir - Ip) / (Ir * Ip * nu_);
 
-    // Invariant frame (section 3.3): R_pqr(t) = W Z(phi(t)) B(m(t)) with W = R0 B(m0)^T, phi(0) = 0.
+    // Invariant frame (section 3.3): R_pqr(t) = W Z(phi(t)) B(m(t)) with W = R0 B(m0)^T, phi(0) =
+    // 0.
     B0t_ = invariant_from_body(Vec3L(mp, mq, mr)).transpose();
 }
 

@@ -96,7 +96,7 @@ class FreeRotation {
     Real r0_ = 0;                    // u at t = 0, in [-K, K]
     Real Pi0_ = 0;                   // Pi(n; am r0, k)
     Real phi_rate_ = 0, phi_pi_ = 0; // phi(t) = phi_rate t + phi_pi (Pi(am u) - Pi0)
-    Eigen::Matrix<Real, 3, 3> B0t_; // B(m0)^T: the invariant frame W = R0 P B(m0)^T (section 3.3)
+    Eigen::Matrix<Real, 3, 3> B0t_;  // B(m0)^T: the invariant frame W = R0 P B(m0)^T (section 3.3)
 };
 
 } // namespace tumble::physics
