@@ -106,8 +106,11 @@ double run_cost(const Model& model, Integrator integrator, std::int64_t steps) {
 }
 
 std::string integrator_refusal(const Model& model, Integrator integrator) {
-    return integrator_info(integrator).refuses ? integrator_info(integrator).refuses(model)
-                                               : std::string{};
+    if (!integrator_info(integrator).refuses_torque) return {};
+    for (int i : model.dynamic_bodies)
+        if (model.applied_torque[i] != Vec3::Zero())
+            return "body " + std::to_string(i) + " has an applied torque (torque-free bodies only)";
+    return {};
 }
 
 AccuracyPlan plan_accuracy(const Model& model, const State& initial, double base,

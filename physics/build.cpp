@@ -134,6 +134,21 @@ Passes decide_passes(const Model& m) {
     return p;
 }
 
+// `exact` follows the torque-free motion (IntegratorInfo::refuses_torque): a body with an applied
+// torque has none, and stepping it as if torque-free would be silently wrong. Refused here, naming
+// the body and the field.
+void check_integrator_fits(const Model& m) {
+    const IntegratorInfo& info = integrator_info(m.integrator);
+    if (!info.refuses_torque) return;
+    for (int i : m.dynamic_bodies)
+        require(m.applied_torque[i] == Vec3::Zero(), i, "torque",
+                "body " + std::to_string(i) + " has an applied torque " +
+                    vec_str(m.applied_torque[i]) + " N m, but the `" + std::string(info.name) +
+                    "` integrator steps torque-free bodies only; use "
+                    "`splitting_exact` (the exact free flow between half kicks of the torque, "
+                    "order 2) or remove the torque");
+}
+
 } // namespace
 
 Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies) {
@@ -147,6 +162,7 @@ Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies) {
     for (int i = 0; i < static_cast<int>(bodies.size()); ++i) add_body(m, bodies[i], i);
     m.touch = find_touching_pair(m, bodies);
     m.passes = decide_passes(m);
+    check_integrator_fits(m);
     return m;
 }
 

@@ -14,6 +14,9 @@ void integrate_rk4(const Model&, State&, double, std::span<const int>);
 void integrate_splitting(const Model&, State&, double, std::span<const int>);
 void integrate_midpoint(const Model&, State&, double, std::span<const int>);
 void integrate_splitting4(const Model&, State&, double, std::span<const int>);
+void integrate_exact(const Model&, State&, double, std::span<const int>);
+void integrate_splitting_exact(const Model&, State&, double, std::span<const int>);
+void integrate_splitting4_exact(const Model&, State&, double, std::span<const int>);
 
 namespace {
 
@@ -47,6 +50,20 @@ constexpr IntegratorInfo kIntegrators[] = {
      "as splitting: world L to round-off; energy error bounded, no drift",
      "fourth-order composition (Suzuki, five substeps) of splitting: L exact, bounded energy",
      integrate_splitting4, 13.2},
+    // The exact free flow (free_rotation.h): no truncation error without torque.
+    {Integrator::Exact, "exact", kExactOrder,
+     "energy and world L to round-off; no error but round-off (no applied torques)",
+     "exact torque-free motion (Euler-Jacobi) and exact flight under constant forces; refuses "
+     "applied torques",
+     integrate_exact, 26.5, true, true},
+    {Integrator::SplittingExact, "splitting_exact", 2,
+     "without torque as exact; L changes by exactly h tau per step under a torque",
+     "Strang splitting: half kicks of the loads around the exact free flow (Celledoni et al. "
+     "2008)",
+     integrate_splitting_exact, 26.5, true, false},
+    {Integrator::Splitting4Exact, "splitting4_exact", 4, "as splitting_exact",
+     "fourth-order composition (Suzuki, five substeps) of splitting_exact",
+     integrate_splitting4_exact, 132.0, true, false},
 };
 
 // The handles index the table: one row per enumerator, in order.
@@ -71,6 +88,10 @@ std::optional<Integrator> integrator_from_name(std::string_view name) {
     for (const IntegratorInfo& info : kIntegrators)
         if (info.name == name) return info.id;
     return std::nullopt;
+}
+
+std::string order_text(int order) {
+    return order == kExactOrder ? "exact" : std::to_string(order);
 }
 
 std::string integrator_names() {

@@ -36,25 +36,37 @@ enum class Integrator : std::uint8_t {
     Splitting,
     Midpoint,
     Splitting4,
+    Exact,
+    SplittingExact,
+    Splitting4Exact,
     Count // not an integrator: the number of rows
 };
-
-// Why an integrator cannot step a model ("the scene applies torques"), or empty if it can; a row
-// with no such limit has none.
-using RefusalFn = std::string (*)(const Model& model);
 
 struct IntegratorInfo {
     Integrator id;
     std::string_view name;      // as written in scene files and on the command line
-    int order;                  // order of accuracy its theory gives on the rotation
+    int order;                  // order of accuracy its theory gives on the rotation; kExactOrder
+                                // for a method with no truncation error
     std::string_view conserves; // what it keeps exactly or bounded (docs/integrators.md)
     std::string_view summary;   // one line for `tumble explain` and --help
     IntegrateFn integrate;      // defined in integrator_<name>.cpp
     // Cost of one body-step relative to symplectic_euler's, measured (docs/integrators.md, the
-    // ns / body-step column): the cost model with which "auto" compares plans (accuracy_plan.h).
-    double cost;
-    RefusalFn refuses = nullptr;
+    // ns / body-step column; the exact rows by bench/integrators_bench books/*: 1623 and 8104
+    // against 61 ns): the cost model with which "auto" compares plans (accuracy_plan.h).
+    double cost = 1.0;
+    // Steps a torque-free body by its exact motion (free_rotation.h): no truncation error without
+    // torque, whatever h, and so no order to see on a torque-free scene.
+    bool exact_without_torque = false;
+    // build_model() refuses a scene with an applied torque (ModelError naming body and `torque`).
+    bool refuses_torque = false;
 };
+
+// The `order` of a method that truncates nothing on the scenes it accepts (`exact`): its error is
+// round-off at every step, whatever h, so no power of h describes it. Zero, so that wherever a
+// method is chosen for its order (the study's converged reference) every convergent method ranks
+// above it; printed as "exact" (order_text).
+inline constexpr int kExactOrder = 0;
+std::string order_text(int order); // "2", or "exact" for kExactOrder
 
 std::span<const IntegratorInfo> integrators();
 const IntegratorInfo& integrator_info(Integrator id);

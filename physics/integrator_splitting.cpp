@@ -73,12 +73,12 @@ void axis_flow(Quat& q, Vec3& m, int a, double theta) {
     m[d] = md - (sin_t * mb + one_minus_cos * md);
 }
 
-void half_kick(const Model& m, State& s, int i, double h) {
+} // namespace
+
+void load_half_kick(const Model& m, State& s, int i, double h) {
     s.v[i] += 0.5 * h * m.inv_mass[i] * net_force(m, i);
     s.w[i] += angular_velocity_change(m, i, s.q[i], 0.5 * h * net_torque(m, i));
 }
-
-} // namespace
 
 void free_rotation_split(const Vec3& I, const Vec3& inv_I, Quat& q, Vec3& m, double h) {
     const SplitAxes a = split_axes(I, inv_I);
@@ -91,7 +91,7 @@ void free_rotation_split(const Vec3& I, const Vec3& inv_I, Quat& q, Vec3& m, dou
 }
 
 void splitting_step(const Model& m, State& s, int i, double h, bool loads) {
-    if (loads) half_kick(m, s, i, h);
+    if (loads) load_half_kick(m, s, i, h);
     add_compensated(s.x[i], s.x_carry[i], h * s.v[i]);
     if (anisotropic(m, i)) {
         Vec3 mb = m.inertia[i].cwiseProduct(to_body(s.q[i], s.w[i]));
@@ -100,7 +100,7 @@ void splitting_step(const Model& m, State& s, int i, double h, bool loads) {
     } else {
         s.q[i] = (quat_exp(h * s.w[i]) * s.q[i]).normalized(); // exact: w is constant
     }
-    if (loads) half_kick(m, s, i, h);
+    if (loads) load_half_kick(m, s, i, h);
 }
 
 void integrate_splitting(const Model& m, State& s, double h, std::span<const int> bodies) {

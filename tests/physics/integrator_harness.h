@@ -61,6 +61,15 @@ inline double error_at_end(const scenes::Scene& scene, Integrator integrator, do
     return error_against_exact(w, ex);
 }
 
+// `scene` as integrator `id` takes it: for one that refuses applied torques (`exact`,
+// IntegratorInfo::refuses_torque) the torques are removed; the refusal itself is tested in
+// exact_integrator_test.cpp.
+inline scenes::Scene as_taken_by(scenes::Scene scene, Integrator id) {
+    if (integrator_info(id).refuses_torque)
+        for (BodyDef& b : scene.bodies) b.applied_torque = Vec3::Zero();
+    return scene;
+}
+
 inline bool bit_equal(const State& a, const State& b) {
     const auto same = [](const auto& u, const auto& v) {
         return u.size() == v.size() &&

@@ -76,7 +76,8 @@ TEST_P(PassesUnchanged, SkippedLoadPassesAreBitIdentical) {
 TEST_P(PassesUnchanged, SkippedIsotropicWorkAgreesToRoundOff) {
     for (const scenes::Scene& scene :
          {scenes::torque_free_spheres(20), scenes::gravity_spin_scene()}) {
-        World assembled = make_world(scene, GetParam(), 1.0 / 240.0);
+        World assembled =
+            make_world(testing::as_taken_by(scene, GetParam()), GetParam(), 1.0 / 240.0);
         World full = assembled;
         force_all_passes(full.model);
         run(assembled, 2000);
