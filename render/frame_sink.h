@@ -51,6 +51,20 @@ struct SinkOptions {
     std::string x264_params;
     PngWriteOptions png;    // encoder and zlib level of PNG sinks
     bool overwrite = false; // PNG sequence: replace frames of the pattern already in the folder
+    // MP4: x264 is closed and opened afresh every `key_interval` frames of the whole run (0: one
+    // encoder for the whole file), so that each run of key_interval frames is encoded knowing
+    // nothing of the others (video_sink.h says why) and a shard's video holds the same packets
+    // as the same frames of a whole render.
+    int key_interval = 0;
+    // A shard of a longer run (`tumble render --frames A:B`): the frames written are A..B-1 of the
+    // whole run (first_frame = A, a multiple of key_interval; end_frame = B). A PNG sequence names
+    // frame k by its index in the whole run, and refuses (or with `overwrite` removes) only the
+    // existing frames of its own range, since other shards fill the rest of the folder.
+    // end_frame -1: the whole run, starting at first_frame.
+    std::int64_t first_frame = 0;
+    std::int64_t end_frame = -1;
+    // Video files: the container's "comment" tag (MP4 and WebM), e.g. what `tumble join` checks.
+    std::string comment;
 };
 
 class FrameSink {

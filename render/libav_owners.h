@@ -1,6 +1,7 @@
 #pragma once
 // Owning pointers for the libav objects the video and GIF sinks use, each freed by its own
-// function, and libav's error codes as text. Internal to render/ (video_sink.cpp, gif_sink.cpp).
+// function, and libav's error codes as text. Used by render/'s video and GIF sinks and by
+// app/cluster's join (a remux of the videos they write).
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>

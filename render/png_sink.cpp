@@ -107,6 +107,21 @@ std::vector<fs::path> FramePattern::existing_frames() const {
 
 // ---- PngSequenceSink ---------------------------------------------------------------------------
 
+namespace {
+
+// The existing files a run would mix with its own: any frame of the pattern for a whole run, the
+// frames of its own range for a shard (SinkOptions::end_frame).
+std::vector<fs::path> frames_in_the_way(const FramePattern& pattern, const SinkOptions& o) {
+    if (o.end_frame < 0) return pattern.existing_frames();
+    std::vector<fs::path> out;
+    std::error_code ec;
+    for (std::int64_t k = o.first_frame; k < o.end_frame; ++k)
+        if (fs::is_regular_file(pattern.name(k), ec)) out.emplace_back(pattern.name(k));
+    return out;
+}
+
+} // namespace
+
 PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& options)
     : pattern_(std::move(pattern)), options_(options) {
     const fs::path dir = fs::path(pattern_.name(0)).parent_path();
@@ -117,7 +132,7 @@ PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& option
     }
     // Frames of an earlier run: fewer new frames would leave the rest behind, and a later
     // `ffmpeg -i frames/%06d.png` would play them as if they were this run's.
-    const std::vector<fs::path> stale = pattern_.existing_frames();
+    const std::vector<fs::path> stale = frames_in_the_way(pattern_, options_);
     if (!stale.empty() && !options_.overwrite)
         throw SinkError("'" + pattern_.text + "': the folder already holds " +
                         std::to_string(stale.size()) + " frame" + (stale.size() == 1 ? "" : "s") +
@@ -137,7 +152,7 @@ void PngSequenceSink::write(const Image& image) {
     options_.width = image.width; // later frames must have the size of the first
     options_.height = image.height;
     try {
-        write_png(pattern_.name(frames_), image, options_.png);
+        write_png(pattern_.name(options_.first_frame + frames_), image, options_.png);
     } catch (const PngError& e) {
         throw SinkError(e.what());
     }
@@ -156,7 +171,8 @@ void PngSequenceSink::finish() {
 void PngSequenceSink::abort() noexcept {
     if (done_) return;
     std::error_code ignored;
-    for (std::int64_t k = 0; k < frames_; ++k) fs::remove(pattern_.name(k), ignored);
+    for (std::int64_t k = 0; k < frames_; ++k)
+        fs::remove(pattern_.name(options_.first_frame + k), ignored);
     if (!created_directory_.empty()) fs::remove(created_directory_, ignored); // only if empty
     done_ = true;
 }

@@ -85,6 +85,7 @@ struct VideoSink::Encoder {
     std::unique_ptr<AVPacket, PacketFree> packet;
     AVStream* stream = nullptr; // owned by `format`
     std::string output;         // for messages
+    std::string comment;        // the container's comment tag (SinkOptions::comment)
     Format kind;
 
     void check(int code, const char* what) const {
@@ -93,6 +94,7 @@ struct VideoSink::Encoder {
         }
     }
     void open_codec(const SinkOptions& o);
+    void restart_codec(const SinkOptions& o);
     void open_container(const fs::path& temp, bool stream_out);
     void open_scaler(const SinkOptions& o);
     void encode(const AVFrame* frame); // nullptr drains the encoder
@@ -153,6 +155,23 @@ void VideoSink::Encoder::open_codec(const SinkOptions& o) {
     check(opened, what.c_str());
 }
 
+// A key frame of SinkOptions::key_interval: drains x264 and opens a fresh one with the same
+// settings, whose first frame is an IDR picture. The stream keeps the first encoder's SPS and PPS
+// (the MP4's avcC); a fresh x264 with the same settings makes the same ones, and if it ever did
+// not, the file would decode wrongly after this point, so that is checked rather than assumed.
+void VideoSink::Encoder::restart_codec(const SinkOptions& o) {
+    encode(nullptr);
+    open_codec(o);
+    const AVCodecParameters* p = stream->codecpar;
+    const bool same =
+        codec->extradata_size == p->extradata_size &&
+        std::equal(codec->extradata, codec->extradata + p->extradata_size, p->extradata);
+    if (!same)
+        throw SinkError("cannot write '" + output +
+                        "': the restarted encoder made other stream headers (SPS/PPS) than the "
+                        "first; the key-frame segments cannot share one stream");
+}
+
 void VideoSink::Encoder::open_container(const fs::path& temp, bool stream_out) {
     // "file:" stops libavformat from reading a colon in the name as a protocol ("a:b.mp4"), and
     // the muxer is named because the temporary name does not end in .mp4. A pipe is written
@@ -172,6 +191,7 @@ void VideoSink::Encoder::open_container(const fs::path& temp, bool stream_out) {
     stream->time_base = codec->time_base;
     stream->avg_frame_rate = codec->framerate;
     check(avio_open(&f->pb, url.c_str(), AVIO_FLAG_WRITE), "creating the file");
+    if (!comment.empty()) av_dict_set(&f->metadata, "comment", comment.c_str(), 0);
     AVDictionary* settings = nullptr;
     // faststart: at the end, rewrite the file with the index ("moov") first. That second pass
     // reopens the file by its name, which is why the name is set above. A pipe (a FIFO, standard
@@ -234,6 +254,7 @@ VideoSink::VideoSink(const fs::path& output, const SinkOptions& options)
     }
     encoder_ = std::make_unique<Encoder>();
     encoder_->output = output.string();
+    encoder_->comment = options.comment;
     encoder_->kind = kind;
     try {
         encoder_->open_codec(options);
@@ -259,6 +280,10 @@ void VideoSink::write(const Image& image) {
     const int source_stride[1] = {image.width * 3};
     sws_scale(encoder_->scaler.get(), source, source_stride, 0, image.height, frame->data,
               frame->linesize);
+    const std::int64_t k = options_.first_frame + frames_; // the frame's index in the whole run
+    if (!encoder_->kind.vp9 && options_.key_interval > 0 && frames_ > 0 &&
+        k % options_.key_interval == 0)
+        encoder_->restart_codec(options_);
     frame->pts = frames_;
     encoder_->encode(frame);
     ++frames_;

@@ -24,6 +24,15 @@
 //    - SWS_BITEXACT for the RGB -> YUV conversion (same result from every SIMD path);
 //    - no wall-clock time in the file (the MP4 creation time stays 0).
 //    Different FFmpeg or x264 versions may still encode differently (and record their versions).
+//  * Key frames (MP4, SinkOptions::key_interval K): x264 is drained and opened afresh at every
+//    frame whose index in the whole run is a multiple of K, so each K frames are encoded by an
+//    encoder that has seen no others, starting with an IDR picture. Key frames alone (x264's
+//    keyint) would not do: x264's rate control carries history from frame to frame (the
+//    quantiser of a frame follows the complexity of the frames before it, and an I frame's
+//    follows the past P frames'), so the same frames would be coded differently after another
+//    past. With fresh encoders a shard of frames A..B-1 (A a multiple of K) holds exactly the
+//    packets of those frames in a whole render, and `tumble join` is a remux (app/cluster).
+//    Timestamps run on across the restarts (pts = frame index in the file).
 // The file is written as ".NAME.<pid>.partial" in the same directory and renamed in finish().
 #include "io/atomic_file.h"
 #include "render/frame_sink.h"

@@ -28,6 +28,10 @@ packages=(
   # browser (headless Chromium: screenshot and DOM), the JUnit file validated against the schema CI
   # tools read (xmllint), the JSON Schemas checked by a real validator (Python's jsonschema).
   chromium libxml2-utils python3-jsonschema
+  # The cluster test starts a real single-node Slurm (tests/cluster/slurm_test.sh, docs/cluster.md):
+  # Debian's slurm-wlm (slurmctld, slurmd, sbatch) and munge, its authentication daemon. Only the
+  # test runs them, each stopped by its process id when it ends.
+  slurm-wlm munge
 )
 
 missing=()

@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
         add_version_flag(app),     add_render_command(app),  add_bench_render_command(app),
         add_simulate_command(app), add_explain_command(app), add_scenes_command(app),
         add_test_command(app),     add_diff_command(app),    add_study_command(app),
-        add_schema_command(app),   add_plot_command(app),
+        add_schema_command(app),   add_plot_command(app),    add_join_command(app),
+        add_shards_command(app),   add_sweep_command(app),
     };
     try {
         app.parse(argc, argv);

@@ -6,12 +6,14 @@
 #include "app/cli/compare_command.h"
 #include "app/cli/failure.h"
 #include "app/cli/render_setup.h"
+#include "app/cli/shard_setup.h"
 #include "app/cli/subcommand.h"
 #include "app/run/auto_camera.h"
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/render_frames.h"
 #include "app/run/simulation.h"
+#include "io/bad_input.h"
 #include "physics/diagnostics.h"
 
 #include <chrono>
@@ -31,9 +33,18 @@ void add_render_options(CLI::App* r, RenderCommand& render) {
     r->add_option("--fps", render.fps, "frames per second");
     auto* frame =
         r->add_option("--frame", render.frame, "render only frame K (t = K / fps) to a .png still");
-    r->add_option("--time", render.time,
-                  "render only the frame shown at t = SECONDS (the nearest frame) to a .png still")
-        ->excludes(frame);
+    auto* time = r->add_option(
+        "--time", render.time,
+        "render only the frame shown at t = SECONDS (the nearest frame) to a .png still");
+    time->excludes(frame);
+    r->add_option("--frames", render.frames,
+                  "render only frames A to B-1 of the run, a shard (A:B; for .mp4 on key frames, "
+                  "every 2 s); join MP4 shards with `tumble join`")
+        ->excludes(frame)
+        ->excludes(time);
+    r->add_option("--from-checkpoints", render.from_checkpoints,
+                  "continue from the nearest checkpoint at or before the first frame, written by "
+                  "`tumble simulate --checkpoint-every K --checkpoints DIR`");
     r->add_option(
          "--crf", render.crf,
          "quality, lower is better: H.264 (.mp4) 0..51, VP9 (.webm) 0..63 (checked by the sink)")
@@ -106,7 +117,9 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
             scene.source.c_str(), static_cast<long long>(*cmd.frame), tl.frame_time(*cmd.frame),
             tl.steps_per_frame, tl.steps_per_frame == 1 ? "" : "s", tl.h);
     else
-        std::fprintf(stderr, "tumble: %s: %s\n", scene.source.c_str(), tl.describe().c_str());
+        std::fprintf(stderr, "tumble: %s: %s%s%s\n", scene.source.c_str(),
+                     cmd.frames ? "frames " : "", cmd.frames ? cmd.frames->c_str() : "",
+                     (cmd.frames ? " of " + tl.describe() : tl.describe()).c_str());
     std::fprintf(stderr,
                  "tumble: integrator %s, %d bodies, t_end = %.6g s, energy %.9g J -> %.9g J\n",
                  std::string(physics::integrator_info(sim.model.integrator).name).c_str(),
@@ -118,6 +131,9 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
 }
 
 int run_render(const RenderCommand& command) {
+    if (!command.compare.empty() && (command.frames || !command.from_checkpoints.empty()))
+        throw io::BadInput("--compare draws whole runs side by side: it takes no --frames or "
+                           "--from-checkpoints");
     if (!command.compare.empty()) return run_compare(command);
     RenderCommand cmd = command;
     Scene scene = load_for_command(cmd.common);
@@ -126,22 +142,26 @@ int run_render(const RenderCommand& command) {
     if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
+    const FrameRange range = render_range(cmd, scene, tl); // --frames A:B, or the whole run
+    const std::string output = output_name(cmd, scene);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
     if (const std::string note = threads_note(sim, cmd.common.threads);
         !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
+    // Checked before the output exists: a checkpoint of another run is refused leaving nothing.
+    const std::optional<ResumePoint> resume = resume_point(cmd, scene, tl, sim, range);
     // From before the output exists, so no signal can leave it half-written; on an exception the
     // sink's destructor deletes the partial output.
     InterruptGuard guard;
     const std::unique_ptr<render::FrameSink> sink =
-        open_render_sink(cmd, scene, output_name(cmd, scene));
+        open_render_sink(cmd, scene, output, run_output(cmd, scene, tl, range, output));
     // camera.auto: a pre-pass over the run, once the input and the output are known to be good
     // (a bad output name is exit 2 before any stepping).
     frame_automatically(scene, tl);
     const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
     const auto t0 = std::chrono::steady_clock::now();
-    const RunResult r = render_frames(scene, tl, sim, *sink, cmd.frame.value_or(0),
-                                      cmd.frame.value_or(tl.frames - 1), cmd.common.quiet);
+    const RunResult r = render_frames(scene, tl, sim, *sink, range.first, range.end - 1,
+                                      cmd.common.quiet, resume ? &*resume : nullptr);
     if (r.frames > 0)
         sink->finish();
     else

@@ -2,6 +2,7 @@
 
 #include "app/cli/stale_temporaries.h"
 
+#include "app/cluster/frame_range.h"
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
 
@@ -118,7 +119,8 @@ std::string output_name(const RenderCommand& cmd, const Scene& scene, const std:
 }
 
 std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
-                                                    const std::string& output) {
+                                                    const std::string& output,
+                                                    const RunOutput& run) {
     // The folders above the output. A PNG sequence's own folder ("frames/") is left to the sink,
     // which creates it and removes it again if the run fails before a frame is kept.
     auto parent = std::filesystem::path(output).parent_path();
@@ -136,6 +138,10 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
     options.crf = cmd.crf;
     options.overwrite = cmd.overwrite;
     options.preset = video_preset(cmd);
+    options.key_interval = key_interval(scene.render.fps);
+    options.first_frame = run.first_frame;
+    options.end_frame = run.end_frame;
+    options.comment = run.comment;
     remove_stale_temporaries_for(output, cmd.common.quiet);
     try {
         return render::open_sink(output, options);

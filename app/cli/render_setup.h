@@ -37,6 +37,17 @@ struct RenderCommand {
     bool overwrite = false; // a frame folder may hold an earlier run's frames: remove them first
     // Integrators drawn side by side, each stepping its own copy of the scene (compare_command).
     std::vector<std::string> compare;
+    // A shard: frames A..B-1 only ("A:B", app/cluster/frame_range.h), continuing from the
+    // nearest checkpoint at or before A in `from_checkpoints` when given.
+    std::optional<std::string> frames;
+    std::string from_checkpoints;
+};
+
+// What a run adds to its sink's options: the frames it draws when it is a shard
+// (SinkOptions::first_frame, end_frame) and the video's tumble-shard tag (app/cluster/shard_tag.h).
+struct RunOutput {
+    std::int64_t first_frame = 0, end_frame = -1;
+    std::string comment;
 };
 
 // --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
@@ -71,7 +82,10 @@ std::string output_name(const RenderCommand& cmd, const Scene& scene,
 // creating the output's folder first (not for a name with a %d pattern). An output that cannot be
 // opened (unknown type, odd size for H.264, a folder that cannot be made) is bad input: throws
 // io::BadInput. Errors while writing later are failed runs (render::SinkError).
+// MP4s get a key frame every two seconds (app/cluster/frame_range.h: key_interval), where the
+// encoder starts afresh, so that a video can be split into shards there.
 std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
-                                                    const std::string& output);
+                                                    const std::string& output,
+                                                    const RunOutput& run = {});
 
 } // namespace tumble::app

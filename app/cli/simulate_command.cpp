@@ -1,19 +1,24 @@
 // `tumble simulate`: step a scene without rendering and write the trajectory and diagnostics as
 // CSV. Uses the same time step as `tumble render` (see app/run/timeline.h), so row t = k / fps
 // holds the state that frame k shows. `-o -` streams the states to standard output.
+// --checkpoint-every K writes the complete state every K frames (app/cluster/checkpoint_store.h),
+// with or without the CSV, for shards of a render to continue from (docs/cluster.md).
 #include "app/cli/failure.h"
 #include "app/cli/scene_options.h"
 #include "app/cli/stale_temporaries.h"
 #include "app/cli/subcommand.h"
+#include "app/cluster/checkpoint_store.h"
 #include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
 #include "app/run/progress.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/run/trajectory_writer.h"
+#include "io/atomic_file.h"
 #include "io/bad_input.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -25,7 +30,30 @@ struct SimulateCommand {
     std::string output;                     // states CSV, or "-" for standard output
     std::optional<std::string> diagnostics; // default <stem>.diagnostics.csv; "" for none
     int every = 1;                          // write every N-th step
+    std::optional<int> fps;                 // frames per second (frame k at t = k / fps)
+    int checkpoint_every = 0;               // frames between checkpoints; 0: none
+    std::string checkpoints;                // their folder; default "<scene>_checkpoints/"
 };
+
+// The checkpoints' folder, created now (a folder that cannot be made is bad input, exit 2,
+// before any stepping). Empty without --checkpoint-every.
+std::filesystem::path checkpoint_folder(const SimulateCommand& cmd, const Scene& scene) {
+    if (cmd.checkpoint_every == 0) {
+        if (!cmd.checkpoints.empty())
+            throw io::BadInput(
+                "--checkpoints " + cmd.checkpoints +
+                ": says where checkpoints go, but --checkpoint-every K is not given");
+        return {};
+    }
+    const std::filesystem::path dir =
+        cmd.checkpoints.empty() ? scene_name(scene) + "_checkpoints" : cmd.checkpoints;
+    try {
+        io::ensure_writable_directory(dir);
+    } catch (const io::FileError& e) {
+        throw io::BadInput(std::string("--checkpoints: ") + e.what());
+    }
+    return dir;
+}
 
 // Diagnostics go beside the states, unless the states go to standard output (then only where
 // --diagnostics says: two tables cannot share one stream).
@@ -48,6 +76,7 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
     if (cmd.common.quiet) return;
     std::string files;
     for (const std::string& w : written) files += (files.empty() ? "" : " and ") + w;
+    if (files.empty()) files = "nothing";
     std::fprintf(stderr, "tumble: %s: %s%lld steps of %.9g s, %s; wrote %s\n", scene.source.c_str(),
                  interrupted ? "interrupted after " : "", static_cast<long long>(sim.state.step), h,
                  describe_peak_memory().c_str(), files.c_str());
@@ -58,20 +87,29 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
 }
 
 int run_simulate(const SimulateCommand& cmd) {
-    const Scene scene = load_for_command(cmd.common);
+    if (cmd.output.empty() && cmd.checkpoint_every == 0)
+        throw io::BadInput("simulate: expected -o FILE (the states CSV, - for standard output), "
+                           "--checkpoint-every K (checkpoints only), or both");
+    Scene scene = load_for_command(cmd.common);
+    if (cmd.fps) scene.render.fps = *cmd.fps; // as `tumble render --fps`: the same frame times
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
     Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
     for (const std::string& note : {tl.adjustment_note(), threads_note(sim, cmd.common.threads)})
         if (!note.empty() && !cmd.common.quiet)
             std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
-    const std::string diagnostics = diagnostics_output(cmd);
+    const std::string diagnostics = cmd.output.empty() ? "" : diagnostics_output(cmd);
+    const std::filesystem::path checkpoints = checkpoint_folder(cmd, scene);
     for (const std::string& path : {cmd.output, diagnostics})
-        remove_stale_temporaries_for(path, cmd.common.quiet);
+        if (!path.empty()) remove_stale_temporaries_for(path, cmd.common.quiet);
     InterruptGuard guard; // from before the files exist: no signal can leave them half-written
-    TrajectoryWriter out(cmd.output, diagnostics, scene);
+    std::optional<TrajectoryWriter> out;
+    if (!cmd.output.empty()) out.emplace(cmd.output, diagnostics, scene);
     const std::int64_t total = tl.end_step(); // the last row at t = duration
+    // Checkpoints at frames K, 2K, ... of the video (frame k after k * steps_per_frame steps).
+    const std::int64_t checkpoint_steps = std::int64_t{cmd.checkpoint_every} * tl.steps_per_frame;
+    std::int64_t saved = 0;
     Progress progress("simulating", total, cmd.common.quiet);
-    out.write(sim.model, sim.state);
+    if (out) out->write(sim.model, sim.state);
     bool interrupted = false;
     for (std::int64_t k = 1; k <= total; ++k) {
         if (InterruptGuard::requested()) {
@@ -79,11 +117,20 @@ int run_simulate(const SimulateCommand& cmd) {
             break;
         }
         sim.step();
-        if (k % cmd.every == 0 || k == total) out.write(sim.model, sim.state);
+        if (out && (k % cmd.every == 0 || k == total)) out->write(sim.model, sim.state);
+        if (checkpoint_steps > 0 && k % checkpoint_steps == 0 &&
+            k / tl.steps_per_frame < tl.frames) {
+            save_checkpoint(checkpoints, scene, tl, sim, k / tl.steps_per_frame);
+            ++saved;
+        }
         progress.update(k);
     }
     progress.finish();
-    const std::vector<std::string> written = interrupted ? out.finish_interrupted() : out.finish();
+    std::vector<std::string> written;
+    if (out) written = interrupted ? out->finish_interrupted() : out->finish();
+    if (saved > 0)
+        written.push_back(std::to_string(saved) + " checkpoint" + (saved == 1 ? "" : "s") + " in " +
+                          checkpoints.string() + "/");
     report(cmd, scene, sim, tl.h, written, interrupted);
     return interrupted ? interrupted_exit_code(InterruptGuard::signal_number()) : kOk;
 }
@@ -98,12 +145,21 @@ Subcommand add_simulate_command(CLI::App& app) {
     s->add_option("-o,--output", cmd->output,
                   "states CSV, or - for standard output (diagnostics go to "
                   "<stem>.diagnostics.csv); a run cut short by Ctrl-C goes to "
-                  "<stem>.interrupted.csv")
-        ->required();
+                  "<stem>.interrupted.csv");
     s->add_option("--diagnostics", cmd->diagnostics,
                   "diagnostics CSV (default <stem>.diagnostics.csv; none: do not write them)");
     s->add_option("--every", cmd->every, "write every N-th step (default 1)")
         ->check(CLI::PositiveNumber);
+    s->add_option("--fps", cmd->fps,
+                  "frames per second, as `tumble render --fps` (the step fits the frame times; "
+                  "checkpoints are numbered by frame)")
+        ->check(CLI::Range(1, 1000));
+    s->add_option("--checkpoint-every", cmd->checkpoint_every,
+                  "write the complete state every K frames (frames K, 2K, ...) for `tumble render "
+                  "--frames A:B --from-checkpoints DIR` to continue from (docs/cluster.md)")
+        ->check(CLI::PositiveNumber);
+    s->add_option("--checkpoints", cmd->checkpoints,
+                  "folder of the checkpoints (default <scene>_checkpoints/): DIR/frame_000060.tck");
     return {[s] { return s->parsed(); }, [cmd] { return run_simulate(*cmd); }};
 }
 

@@ -24,6 +24,9 @@ Subcommand add_schema_command(CLI::App& app);
 Subcommand add_diff_command(CLI::App& app);
 Subcommand add_study_command(CLI::App& app);
 Subcommand add_plot_command(CLI::App& app);
+Subcommand add_join_command(CLI::App& app); // docs/cluster.md: join, shards, sweep
+Subcommand add_shards_command(CLI::App& app);
+Subcommand add_sweep_command(CLI::App& app);
 Subcommand add_version_flag(CLI::App& app); // tumble --version
 
 } // namespace tumble::app

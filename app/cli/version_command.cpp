@@ -1,7 +1,9 @@
-// `tumble --version`: the version, and the OpenGL renderer this machine gives (golden images
-// record it: frames are promised bit-identical only for the same GL_RENDERER and GL_VERSION).
+// `tumble --version`: the version, the build (app/cluster/build_id.h: checkpoints and video shards
+// record it), and the OpenGL renderer this machine gives (golden images record it: frames are
+// promised bit-identical only for the same GL_RENDERER and GL_VERSION).
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
+#include "app/cluster/build_id.h"
 #include "render/renderer.h"
 
 #include <cstdio>
@@ -12,7 +14,7 @@ namespace tumble::app {
 namespace {
 
 int run_version() {
-    std::printf("tumble %s\n", TUMBLE_VERSION);
+    std::printf("tumble %s\nbuild: %s\n", TUMBLE_VERSION, build_id().c_str());
     std::unique_ptr<render::Renderer> probe;
     try {
         probe = std::make_unique<render::Renderer>(render::RenderOptions{16, 16});

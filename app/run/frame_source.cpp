@@ -5,6 +5,8 @@
 #include "physics/step.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace tumble::app {
 
@@ -42,6 +44,16 @@ void FrameSource::record() {
     }
     if (trails_) trails_->record(sim_.model, sim_.state);
     if (poinsot_) poinsot_->record(sim_.model, sim_.state);
+}
+
+void FrameSource::resume(std::int64_t frame, const physics::State& state) {
+    if (frame < 0 || frame > first_ || k_ != 0 ||
+        state.step != frame * std::int64_t{timeline_.steps_per_frame})
+        throw std::invalid_argument("cannot resume frame " + std::to_string(frame) + " at step " +
+                                    std::to_string(state.step) + " before frame " +
+                                    std::to_string(first_));
+    sim_.state = state;
+    k_ = frame;
 }
 
 void FrameSource::step_one_frame() {

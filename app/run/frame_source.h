@@ -29,6 +29,12 @@ class FrameSource {
                 std::int64_t last, std::shared_ptr<ChartScale> chart_scale = nullptr,
                 int canvas_width = 0, int canvas_height = 0);
 
+    // Continues from `state`, the state of frame `frame` <= first (a checkpoint, app/cluster),
+    // instead of stepping there from t = 0. Call before next(). What is measured against t = 0
+    // (the overlay's initial energy, the arrows' scales) keeps the values of the simulation's
+    // state at construction. Throws std::invalid_argument when `state` is not at that frame's step.
+    void resume(std::int64_t frame, const physics::State& state);
+
     // Fills `view` with the next frame (reusing its storage) and steps on to the one after.
     // Returns false when every frame has been produced. Throws physics::DivergenceError.
     bool next(render::SceneView& view);

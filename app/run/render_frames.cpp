@@ -33,11 +33,12 @@ void tune_allocator_for_rendering() {
 }
 
 RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
-                        render::FrameSink& sink, std::int64_t first, std::int64_t last,
-                        bool quiet) {
+                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet,
+                        const ResumePoint* resume) {
     tune_allocator_for_rendering();
     RunResult out;
     FrameSource source(scene, tl, sim, first, last);
+    if (resume) source.resume(resume->frame, resume->state);
     Progress progress("rendering", last - first + 1, quiet);
     PipelineStages stages;
     stages.produce = [&](render::SceneView& view) {

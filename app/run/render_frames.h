@@ -21,11 +21,19 @@ struct RunResult {
     PipelineStats stats;
 };
 
+// A state to continue from instead of stepping from t = 0: frame `frame`'s (a checkpoint).
+struct ResumePoint {
+    std::int64_t frame = 0;
+    physics::State state;
+};
+
 // Draws frames first..last of `sim` (at t = 0) into `sink` through the pipeline; stops early,
 // finishing the frames in flight, on Ctrl-C. Does not finish() the sink. Throws what the stages
-// throw (DivergenceError, RenderError, SinkError).
+// throw (DivergenceError, RenderError, SinkError). With `resume` (frame <= first), the physics
+// continues from its state (FrameSource::resume) instead of from t = 0.
 RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
-                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet);
+                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet,
+                        const ResumePoint* resume = nullptr);
 
 // Process-wide malloc settings that spare llvmpipe a page fault storm every frame (see the .cpp).
 // render_frames() calls it; other long rendering loops may too.

@@ -59,6 +59,10 @@ struct RenderSettings {
 
 struct Scene {
     std::string source; // file path, or "builtin:<name>" for an embedded scene
+    // ContentHash (app/scene/content_hash.h) of the scene's text and of each mesh file it read,
+    // in reading order: what checkpoints and video shards record to tell whether they were made
+    // from this scene. Command-line overrides are not in it (they are recorded apart).
+    std::uint64_t content_hash = 0;
     std::string title;
     physics::WorldDef world;
     double duration = 10.0; // s of simulated (and rendered) time

@@ -111,6 +111,8 @@ Scene load_scene(const std::string& text, const std::string& source) {
                     ", got " + std::to_string(version));
     Scene s;
     s.source = source;
+    ContentHash inputs; // the scene's text, then each mesh file's
+    inputs.add(text);
     if (auto t = r.optional("title")) s.title = t->string();
     if (auto w = r.optional("world")) read_world(ObjectReader(w->reader(), fields::world()), s);
     if (auto rs = r.optional("render"))
@@ -119,10 +121,11 @@ Scene load_scene(const std::string& text, const std::string& source) {
     const std::size_t n = bodies.size();
     s.bodies.resize(n);
     s.looks.resize(n);
-    ShapeContext shapes{source, &s.meshes, {}};
+    ShapeContext shapes{source, &s.meshes, {}, &inputs};
     for (std::size_t i = 0; i < n; ++i)
         read_body(bodies.at(i).reader(), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
     r.finish();
+    s.content_hash = inputs.value();
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
     resolve_followed_body(s.render.camera, names, source);

@@ -36,6 +36,7 @@ const std::pair<ObjMesh, std::uint32_t>& load_mesh(JsonReader file, double scale
     if (!text)
         file.fail("no mesh file " + describe_json(file.value()) +
                   " next to the scene file nor among the bundled meshes (assets/meshes/)");
+    if (c.inputs) c.inputs->add(*text);    // Scene::content_hash
     if (auto bad = check_obj_lines(*text)) // app/scene/obj_lines.h
         file.fail(mesh.origin + ":" + std::to_string(bad->line) + ": " + bad->what);
     auto solid = std::make_shared<physics::TriangleMesh>();

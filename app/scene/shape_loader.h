@@ -2,6 +2,7 @@
 // Reads a body's "shape" object (docs/scene-format.md): sphere, box, plane, capsule or mesh.
 // Mesh files are read once per (file, scale) for the whole scene and shared by the bodies that
 // use them, in physics (the triangles) and in the picture (Scene::meshes).
+#include "app/scene/content_hash.h"
 #include "app/scene/json_reader.h"
 #include "app/scene/obj_mesh.h"
 #include "app/scene/scene.h"
@@ -16,6 +17,7 @@ struct ShapeContext {
     std::string scene_source; // where mesh files are looked up (obj_mesh.h)
     std::vector<std::shared_ptr<const render::MeshData>>* drawn = nullptr; // Scene::meshes
     std::map<std::pair<std::string, double>, std::pair<ObjMesh, std::uint32_t>> loaded;
+    ContentHash* inputs = nullptr; // each mesh file's text is added as it is read
 };
 
 // Fills body.shape (and body.mesh for a mesh) and the look's plane extent / mesh id.

@@ -35,6 +35,9 @@ const std::vector<Room> kRooms = {
     {"app/run",
      {"app/run/", "app/view/", "app/scene/", "physics/", "render/", "io/"},
      {"physics/exact/"}},
+    {"app/cluster",
+     {"app/cluster/", "app/run/", "app/view/", "app/scene/", "physics/", "render/", "io/"},
+     {"physics/exact/"}},
     {"app/study", {"app/study/", "physics/", "io/"}, {}},
     {"app/regression",
      {"app/regression/", "app/run/", "app/scene/", "physics/", "render/", "io/"},
@@ -123,11 +126,15 @@ TEST(House, TheCheckerRefusesBackwardIncludes) {
     EXPECT_FALSE(violation("app/study/gnuplot.cpp", "app/plot/figure.h").empty());
     EXPECT_FALSE(violation("app/plot/figure.cpp", "app/cli/failure.h").empty());
     EXPECT_FALSE(violation("app/plot/figure.cpp", "app/view/camera.h").empty());
+    EXPECT_FALSE(violation("app/run/render_frames.cpp", "app/cluster/checkpoint.h").empty());
+    EXPECT_FALSE(violation("app/cluster/video_join.cpp", "app/cli/failure.h").empty());
     EXPECT_FALSE(violation("tests/physics/x_test.cpp", "bench/sphere_rain.h").empty());
     EXPECT_FALSE(violation("bench/x_bench.cpp", "tests/measured.h").empty());
     EXPECT_FALSE(violation("render/png_io.cpp", "../app/scene/scene.h").empty());
 
     EXPECT_EQ(violation("app/run/still.cpp", "app/scene/scene.h"), "");
+    EXPECT_EQ(violation("app/cluster/checkpoint_store.cpp", "app/run/simulation.h"), "");
+    EXPECT_EQ(violation("app/cli/join_command.cpp", "app/cluster/video_join.h"), "");
     EXPECT_EQ(violation("app/cli/main.cpp", "app/run/interrupt.h"), "");
     EXPECT_EQ(violation("app/regression/suite.cpp", "app/run/frame_source.h"), "");
     EXPECT_EQ(violation("render/png_sink.cpp", "io/atomic_file.h"), "");
