@@ -16,9 +16,8 @@
 // by tests/physics/elliptic_test.cpp.
 namespace tumble::physics {
 
-// Each function exists for double and for long double (x87's 64-bit mantissa): FreeRotation
-// computes in long double, because a bias of 0.05 ulp in any of these, repeated every step, would
-// make the invariants of the `exact` integrators drift (free_rotation.h says how much).
+// Each function exists for double (what FreeRotation steps with) and long double (x87's 64-bit
+// mantissa, for references; tests/physics/elliptic_test.cpp checks both against Boost).
 
 // R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t + x)(t + y)(t + z)); x, y, z >= 0, at most one zero.
 template <class T>

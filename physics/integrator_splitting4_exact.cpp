@@ -7,8 +7,10 @@
 // of the symmetric S, so S4 is of order 4 (the middle substep, -0.658 h, runs backwards).
 // Order: 4.
 // Conserves: what `splitting_exact` conserves; exact without torque, like it.
-// Known failure: five exact free flows per step, five times the cost of `splitting_exact`; it
-// pays only under a torque and for small errors (docs/integrators.md measures where).
+// Known failure: five exact free flows per step, 5.2 times the cost of a `splitting4` step. Under
+// the study's torque that does not pay (with half of splitting4's steps it errs three times
+// more); with 1e-4 of it, a quarter of the steps err five times less, about twice as accurate at
+// equal cost (SplittingExact.Splitting4ExactPaysOnlyUnderWeakTorques; docs/integrators.md).
 #include "physics/model.h"
 #include "physics/passes.h"
 #include "physics/splitting.h"

@@ -93,7 +93,10 @@ void print_passes(const physics::Model& m) {
         std::printf("  gyroscopic     off: every dynamic body is isotropic (w x I w = 0)\n");
     print_contacts(m);
     const physics::IntegratorInfo& info = physics::integrator_info(m.integrator);
-    std::printf("  integrate      %s (order %d): %s\n", std::string(info.name).c_str(), info.order,
+    const std::string order = info.order == physics::kExactOrder
+                                  ? "exact: no truncation error"
+                                  : "order " + physics::order_text(info.order);
+    std::printf("  integrate      %s (%s): %s\n", std::string(info.name).c_str(), order.c_str(),
                 std::string(info.summary).c_str());
     std::printf(
         "  check finite   on: a NaN or infinite state stops the run naming body and step\n");

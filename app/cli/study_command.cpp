@@ -83,16 +83,24 @@ void print_summary(const Results& r, const std::string& dir) {
 
 // The work-precision grid, with a progress bar over its runs.
 void run_grid_with_progress(Results& r, const StudyCommand& cmd) {
+    r.skipped = refused_pairs(problems());
     std::size_t runs = 0;
     for (const Problem& p : problems())
         runs += step_counts(p, cmd.quick).size() * physics::integrators().size();
-    if (!cmd.quiet)
+    for (const Skip& k : r.skipped)
+        for (const Problem& p : problems())
+            if (p.name == k.problem) runs -= step_counts(p, cmd.quick).size();
+    if (!cmd.quiet) {
         std::fprintf(stderr,
                      "tumble study: %zu problems x %zu integrators, %zu runs on %d threads\n",
                      problems().size(), physics::integrators().size(), runs, r.threads);
+        for (const Skip& k : r.skipped)
+            std::fprintf(stderr, "tumble study: skipping %s on %s: %s\n", k.integrator.c_str(),
+                         k.problem.c_str(), k.reason.c_str());
+    }
     Progress progress("runs", static_cast<std::int64_t>(runs), cmd.quiet);
     const Clock::time_point t0 = Clock::now();
-    r.rows = run_grid(problems(), cmd.quick, r.threads, r.timing,
+    r.rows = run_grid(problems(), cmd.quick, r.threads, r.timing, r.skipped,
                       [&](int done, int) { progress.update(done); });
     progress.finish();
     r.seconds_grid = seconds_since(t0);

@@ -1,4 +1,5 @@
 #include "app/study/analysis.h"
+#include "physics/integrator.h"
 
 #include <cmath>
 #include <limits>
@@ -15,6 +16,15 @@ std::vector<OrderFit> fit_orders(const std::vector<Row>& rows) {
             ++end;
         OrderFit f{rows[i].problem, rows[i].integrator, rows[i].contacts ? 1 : rows[i].order, 0.0,
                    0};
+        if (rows[i].exact_here) {
+            // Nothing truncated: the errors are round-off, which grows with the number of steps
+            // (finer steps, larger errors) and has no order; a slope fitted to it would be noise.
+            f.theory = physics::kExactOrder;
+            f.measured = std::numeric_limits<double>::quiet_NaN();
+            fits.push_back(f);
+            i = end;
+            continue;
+        }
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
         for (std::size_t k = i; k < end; ++k) {
             const double e = headline_error(rows[k]);

@@ -15,10 +15,12 @@ inline constexpr double kFitMinError = 1e-10;
 
 // Least-squares slope of log(orientation error, maximum over the run) against log(dt), over the
 // rows of one (problem, integrator) whose error lies in [kFitMinError, kFitMaxError] and that did
-// not diverge. NaN when fewer than three rows qualify (e.g. a method exact on the problem).
+// not diverge. NaN when fewer than three rows qualify, and for a method that truncates nothing on
+// the problem (Row::exact_here, theory physics::kExactOrder): its errors are round-off, which
+// grows as h shrinks (more steps), and no slope describes it.
 struct OrderFit {
     std::string problem, integrator;
-    int theory = 0;
+    int theory = 0; // the registry's order; 1 on a contact problem; kExactOrder where exact_here
     double measured = 0.0;
     int points = 0;
 };

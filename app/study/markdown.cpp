@@ -26,6 +26,12 @@ std::string g3(double v) {
     return buf;
 }
 
+bool is_skipped(const Results& r, const std::string& problem, const std::string& integrator) {
+    for (const Skip& k : r.skipped)
+        if (k.problem == problem && k.integrator == integrator) return true;
+    return false;
+}
+
 std::vector<std::string> integrator_names() {
     std::vector<std::string> names;
     for (const physics::IntegratorInfo& info : physics::integrators())
@@ -72,8 +78,11 @@ void orders_table(std::ostringstream& o, const Results& r, const std::vector<std
          "position error for the contact problems, whose theory is the contact stage's 1) "
          "against log(h), fitted over the steps whose error lies in ["
       << sci(kFitMinError, 0) << ", " << sci(kFitMaxError, 0)
-      << "] rad; `-` where fewer than three steps do (the method is exact on the problem to "
-         "round-off, or never asymptotic on the grid).\n\n| integrator | theory |";
+      << "] rad; `-` where fewer than three steps do (the method is never asymptotic on the "
+         "grid, or exact on the problem to round-off). `exact`: the method truncates nothing on "
+         "the problem (the exact free flow on a problem without torques or contacts), so its "
+         "errors are round-off, which grows with the number of steps, and no order is fitted. "
+         "`skipped`: not run (below).\n\n| integrator | theory |";
     for (const std::string& p : probs) o << ' ' << p << " |";
     o << "\n|---|---|";
     for (std::size_t i = 0; i < probs.size(); ++i) o << "---|";
@@ -82,12 +91,16 @@ void orders_table(std::ostringstream& o, const Results& r, const std::vector<std
         // The free body's order from the registry: a contact problem's fit carries the contact
         // stage's order (1), which the text above states once for all.
         const auto id = physics::integrator_from_name(n);
-        const std::string theory = id ? std::to_string(physics::integrator_info(*id).order) : "?";
+        const std::string theory =
+            id ? physics::order_text(physics::integrator_info(*id).order) : "?";
         std::ostringstream cells;
-        for (const std::string& p : probs)
+        for (const std::string& p : probs) {
+            std::string cell = is_skipped(r, p, n) ? "skipped" : "-";
             for (const OrderFit& f : r.orders)
                 if (f.problem == p && f.integrator == n)
-                    cells << ' ' << fixed(f.measured, 2) << " |";
+                    cell = f.theory == physics::kExactOrder ? "exact" : fixed(f.measured, 2);
+            cells << ' ' << cell << " |";
+        }
         o << "| " << n << " | " << theory << " |" << cells.str() << '\n';
     }
     o << "\n";
@@ -115,6 +128,8 @@ void problem_section(std::ostringstream& o, const Results& r, const std::string&
           << fixed(best->ns_per_body_step, 0) << " | " << g3(best->steps_per_second) << " |\n";
     }
     o << "\n";
+    for (const Skip& k : r.skipped)
+        if (k.problem == problem) o << "Not run: `" << k.integrator << "`: " << k.reason << ".\n\n";
 }
 
 void divergences(std::ostringstream& o, const Results& r) {

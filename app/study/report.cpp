@@ -123,7 +123,12 @@ void write_json(const std::filesystem::path& file, const Results& r) {
                              {"ns_per_body_step", row.ns_per_body_step},
                              {"steps_per_second", row.steps_per_second},
                              {"cost_s", row.cost_s},
-                             {"repetitions", row.repetitions}});
+                             {"repetitions", row.repetitions},
+                             {"exact_here", row.exact_here}});
+    j["skipped"] = nlohmann::json::array();
+    for (const Skip& k : r.skipped)
+        j["skipped"].push_back(
+            {{"problem", k.problem}, {"integrator", k.integrator}, {"reason", k.reason}});
     for (const OrderFit& f : r.orders)
         j["orders"].push_back({{"problem", f.problem},
                                {"integrator", f.integrator},

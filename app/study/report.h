@@ -19,6 +19,7 @@ struct Results {
     int threads = 1;
     TimingSettings timing;
     std::vector<Row> rows;
+    std::vector<Skip> skipped; // pairs not run (`exact` on problems with torques), with the reason
     std::vector<OrderFit> orders;
     std::vector<Recommendation> recommendations;
     std::vector<StabilityResult> stability;

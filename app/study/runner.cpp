@@ -116,10 +116,37 @@ struct Job {
     std::int64_t steps;
 };
 
+bool is_skipped(const std::vector<Skip>& skipped, const Problem& p,
+                const physics::IntegratorInfo& info) {
+    for (const Skip& s : skipped)
+        if (s.problem == p.name && s.integrator == info.name) return true;
+    return false;
+}
+
+// No body of the problem has an applied torque: the exact-flow methods truncate nothing on it.
+bool torque_free(const Problem& p) {
+    for (const physics::BodyDef& b : p.bodies())
+        if (b.applied_torque != physics::Vec3::Zero()) return false;
+    return true;
+}
+
 } // namespace
 
+std::vector<Skip> refused_pairs(const std::vector<Problem>& problems) {
+    std::vector<Skip> out;
+    for (const Problem& p : problems)
+        for (const physics::IntegratorInfo& info : physics::integrators()) {
+            try {
+                make_setup(p, info.id, p.duration / kSamples);
+            } catch (const physics::ModelError& e) {
+                out.push_back({p.name, std::string(info.name), e.what()});
+            }
+        }
+    return out;
+}
+
 std::vector<Row> run_grid(const std::vector<Problem>& problems, bool quick, int threads,
-                          const TimingSettings& timing,
+                          const TimingSettings& timing, const std::vector<Skip>& skipped,
                           const std::function<void(int, int)>& progress) {
     std::vector<Reference> refs(problems.size());
     parallel_for(static_cast<int>(problems.size()), threads,
@@ -127,9 +154,11 @@ std::vector<Row> run_grid(const std::vector<Problem>& problems, bool quick, int 
 
     std::vector<Job> jobs;
     for (std::size_t i = 0; i < problems.size(); ++i)
-        for (const physics::IntegratorInfo& info : physics::integrators())
+        for (const physics::IntegratorInfo& info : physics::integrators()) {
+            if (is_skipped(skipped, problems[i], info)) continue;
             for (std::int64_t n : step_counts(problems[i], quick))
                 jobs.push_back({static_cast<int>(i), &info, n});
+        }
 
     std::vector<Row> rows(jobs.size());
     std::mutex progress_mutex;
@@ -142,6 +171,7 @@ std::vector<Row> run_grid(const std::vector<Problem>& problems, bool quick, int 
         row.integrator = std::string(job.info->name);
         row.order = job.info->order;
         row.contacts = p.contacts;
+        row.exact_here = job.info->exact_without_torque && !p.contacts && torque_free(p);
         row.steps = job.steps;
         row.dt = p.duration / static_cast<double>(job.steps);
         row.h_w = row.dt * largest_spin(p);

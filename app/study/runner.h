@@ -22,10 +22,15 @@ struct TimingSettings {
 // Exceptions are rethrown on the calling thread after every worker stopped.
 void parallel_for(int count, int threads, const std::function<void(int)>& fn);
 
+// The pairs the study cannot run: every (problem, integrator) whose model build_model() refuses
+// (`exact` on a problem with an applied torque), with the refusal's message.
+std::vector<Skip> refused_pairs(const std::vector<Problem>& problems);
+
 // Every row of the study, ordered by problem (table order), integrator (registry order), then
-// step (coarsest first). `progress(done, total)` is called after each row, one call at a time.
+// step (coarsest first), except the `skipped` pairs. `progress(done, total)` is called after each
+// row, one call at a time.
 std::vector<Row> run_grid(const std::vector<Problem>& problems, bool quick, int threads,
-                          const TimingSettings& timing,
+                          const TimingSettings& timing, const std::vector<Skip>& skipped,
                           const std::function<void(int, int)>& progress);
 
 // Relative energy error |E(t) - E(0)| / |E(0)| of one integrator on a problem at step dt, every

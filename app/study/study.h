@@ -90,6 +90,16 @@ struct Row {
     double cost_s = 0.0;           // time to simulate [0, T]: ns_per_body_step * bodies * steps
     int repetitions = 0;
     bool contacts = false; // the problem's: headline_error() is the position error
+    // The integrator truncates nothing on this problem (IntegratorInfo::exact_without_torque on a
+    // problem without applied torques or contacts): its error is round-off at every step, and it
+    // has no order to fit.
+    bool exact_here = false;
+};
+
+// A (problem, integrator) pair the study does not run, and why: `exact` refuses a problem with
+// an applied torque (its ModelError's message, naming the body).
+struct Skip {
+    std::string problem, integrator, reason;
 };
 
 // The error a row is judged by (order fits, plots, recommendations): the orientation error over

@@ -1,8 +1,8 @@
 #pragma once
 // Free-flight scenes whose motion the oracles of physics/exact know exactly (torque-free bodies,
 // free fall, a torque along the spin), used by the integrator tests, the benchmarks and `tumble
-// study`. The scenes need no oracle to be built, so they live here; the oracles (Boost.Math) stay
-// in tumble_exact. SI units (m, kg, s, rad).
+// study`. The scenes need no oracle to be built, so they live here; the oracles stay in
+// tumble_exact. SI units (m, kg, s, rad).
 #include "physics/scenes/scene.h"
 
 namespace tumble::scenes {

@@ -7,8 +7,9 @@
 namespace tumble::test {
 namespace {
 
-const char* const kIntegrators[] = {"euler", "euler_momentum", "symplectic_euler", "implicit_gyro",
-                                    "rk4",   "splitting",      "midpoint",         "splitting4"};
+const char* const kIntegrators[] = {"euler", "euler_momentum",  "symplectic_euler", "implicit_gyro",
+                                    "rk4",   "splitting",       "midpoint",         "splitting4",
+                                    "exact", "splitting_exact", "splitting4_exact"};
 
 TEST(IntegratorsCli, EveryIntegratorSimulatesTheDefaultScene) {
     for (const char* name : kIntegrators) {
@@ -45,6 +46,40 @@ TEST(IntegratorsCli, ExplainSaysWhichStagesAreOnAndWhy) {
                          "sleeping on"),
               std::string::npos)
         << r.out;
+}
+
+TEST(IntegratorsCli, ExactRefusesAnAppliedTorqueNamingTheBodyAndField) {
+    // Chosen on the command line or in the file: exit 2 before anything is written, naming the
+    // file, the JSON path and the body by name, and pointing at the integrator that takes torques.
+    const auto dir = scratch_dir();
+    const std::string bodies =
+        R"("bodies": [{"name": "free", "shape": {"type": "sphere", "radius": 0.1}},
+                      {"name": "spinner", "position": [1, 0, 0],
+                       "shape": {"type": "box", "size": [0.2, 0.1, 0.3]},
+                       "angular_velocity": [1, 2, 3], "torque": [0, 0.1, 0]}]})";
+    write_text(dir / "rk4.json",
+               R"({"format_version": 1, "world": {"gravity": [0, 0, 0], "integrator": "rk4"}, )" +
+                   bodies);
+    write_text(dir / "exact.json",
+               R"({"format_version": 1, "world": {"gravity": [0, 0, 0], "integrator": "exact"}, )" +
+                   bodies);
+    const std::string expected = ": /bodies/1/torque: body 1 \"spinner\" has an applied torque "
+                                 "(0, 0.1, 0) N m, but the `exact` integrator steps torque-free "
+                                 "bodies only; use `splitting_exact`";
+    const CliResult cli = run_tumble(dir, "simulate rk4.json --quiet --integrator exact -o s.csv");
+    EXPECT_EQ(cli.exit_code, 2) << cli.err;
+    EXPECT_NE(cli.err.find("rk4.json" + expected), std::string::npos) << cli.err;
+    const CliResult file = run_tumble(dir, "simulate exact.json --quiet -o s.csv");
+    EXPECT_EQ(file.exit_code, 2) << file.err;
+    EXPECT_NE(file.err.find("exact.json" + expected), std::string::npos) << file.err;
+    EXPECT_EQ(files_in(dir), (std::vector<std::string>{"exact.json", "rk4.json"}));
+    const CliResult ok =
+        run_tumble(dir, "simulate rk4.json --quiet --integrator splitting_exact -o s.csv");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    const CliResult explain = run_tumble(dir, "explain default --integrator exact");
+    EXPECT_NE(explain.out.find("integrate      exact (exact: no truncation error)"),
+              std::string::npos)
+        << explain.out;
 }
 
 } // namespace

@@ -36,6 +36,10 @@ TEST(Lessons, EachIntegratorsErrorOnTheBookIsWhatTheLessonSays) {
     const exact::ExactFreeRigidBody oracle = oracle_of(scene);
     const double h = scene.world.dt;
     for (const physics::IntegratorInfo& info : physics::integrators()) {
+        // The exact-flow methods step with the oracle's own code (physics/free_rotation.h), so
+        // the oracle cannot judge them; the lesson quotes no number for them, and
+        // tests/physics/exact_integrator_test.cpp measures them against a reference of its own.
+        if (info.exact_without_torque) continue;
         const std::string name(info.name);
         expect_quoted(kLesson, name + "_angle_10s", error_at(scene, oracle, name, h, 10.0));
     }

