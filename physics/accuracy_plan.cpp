@@ -88,7 +88,7 @@ std::vector<Search> candidates(const Model& model, const PlanSettings& settings,
             skipped.push_back(std::string(info.name) + ": " + why);
             continue;
         }
-        out.push_back(Search{info.id});
+        out.push_back(Search{info.id, std::max(1, settings.min_k)});
     }
     return out;
 }

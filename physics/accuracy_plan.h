@@ -70,6 +70,7 @@ struct AccuracyPlan {
 struct PlanSettings {
     double target = 0.5; // kTarget: where a predicted step puts E
     double accept = 0.8; // kAccept: a pilot is accepted at E <= accept
+    int min_k = 1;       // h <= base / min_k (contacts: the scene's own step, accuracy_choice.h)
     int max_k = 1 << 20; // h >= base / max_k
     int max_pilots_per_integrator = 6;
     std::vector<Integrator> only; // the candidates; empty: every integrator of the registry

@@ -50,8 +50,13 @@ void resolve_auto_integrator(Scene& scene) {
     const double base = 1.0 / fps;
     const Simulation start = make_simulation(scene, base);
     const auto t0 = std::chrono::steady_clock::now();
+    // With contacts, never a longer step than the scene's own: the contacts' behaviour (bounces,
+    // stacking) is set by it, and the estimate, which stops at a contact, cannot judge it.
+    physics::PlanSettings settings;
+    if (start.model.passes.contacts)
+        settings.min_k = std::max(1, static_cast<int>(std::ceil(base / scene.world.dt - 1e-9)));
     physics::AccuracyPlan plan =
-        physics::plan_accuracy(start.model, start.state, base, frames, tol);
+        physics::plan_accuracy(start.model, start.state, base, frames, tol, settings);
     scene.accuracy.pilot_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!plan.found) {

@@ -26,7 +26,7 @@ std::vector<Problem> pick(const std::vector<std::string>& names) {
 // The grid's errors only (the cost check uses the planner's deterministic cost model): one
 // repetition of the timing run.
 std::vector<Row> quick_grid(const std::vector<Problem>& ps) {
-    return run_grid(ps, true, 2, TimingSettings{1, 1e-5}, [](int, int) {});
+    return run_grid(ps, true, 2, TimingSettings{1, 1e-5}, refused_pairs(ps), [](int, int) {});
 }
 
 TEST(AccuracyAuto, MeetsTheToleranceAtCloseToTheLeastCostAndKnowsItsError) {

@@ -72,6 +72,7 @@
 #include "app/study/metrics.h"
 #include "app/study/study.h"
 #include "measured.h"
+#include "physics/accuracy_plan.h"
 #include "physics/error_estimate.h"
 #include "physics/integrator.h"
 #include "physics/step.h"
@@ -175,6 +176,13 @@ void check(const Ratios& r, double floor, const std::string& what) {
 
 class EstimateAgainstOracle : public ::testing::TestWithParam<std::string> {};
 
+// `exact` refuses a problem with an applied torque (build_model, IntegratorsCli.ExactRefuses...):
+// such a pair has no run to estimate.
+bool refused(const study::Problem& p, physics::Integrator id) {
+    const study::Setup s = study::make_setup(p, physics::Integrator::Rk4, p.duration / 50);
+    return !physics::integrator_refusal(s.model, id).empty();
+}
+
 TEST_P(EstimateAgainstOracle, WithinAFactorOf3OfTheTrueError) {
     const auto& problems = study::problems();
     const auto it = std::find_if(problems.begin(), problems.end(),
@@ -185,6 +193,7 @@ TEST_P(EstimateAgainstOracle, WithinAFactorOf3OfTheTrueError) {
     const study::Reference ref = study::make_reference(p, false);
     double worst = 1.0; // the ratio farthest from 1 (in log) over every checked case
     for (const physics::IntegratorInfo& info : physics::integrators()) {
+        if (refused(p, info.id)) continue;
         const std::int64_t* ns = steps_for(kSteps.at(p.name), info.order);
         for (int k = 0; k < 2; ++k) {
             for (const BodyRatios& b : run(p, ref, info.id, ns[k])) {
@@ -222,6 +231,7 @@ TEST_P(EstimateAgainstOracle, OverTheStudysWholeGrid) {
     const study::Reference ref = study::make_reference(p, false);
     int cases = 0, within = 0;
     for (const physics::IntegratorInfo& info : physics::integrators()) {
+        if (refused(p, info.id)) continue;
         for (std::int64_t n : study::step_counts(p, false)) {
             std::vector<BodyRatios> bodies;
             try {
@@ -256,9 +266,12 @@ TEST(EstimateAgainstOracle, CoversEveryExactProblem) {
     for (const study::Problem& p : study::problems()) {
         if (p.reference != study::ReferenceKind::Exact) continue;
         ++exact;
+        // The same book as intermediate-axis over 20 s: its whole grid would cost minutes here;
+        // `tumble study --auto` checks the estimate on it (docs/accuracy.md).
+        if (p.name == "intermediate-axis-20s") continue;
         EXPECT_TRUE(kSteps.count(p.name)) << p.name << " has no steps in this test";
     }
-    EXPECT_EQ(exact, 6); // measured: 6 (five torque-free problems and projectile-spin)
+    EXPECT_EQ(exact, 7); // measured: 7 (six torque-free problems and projectile-spin)
 }
 
 INSTANTIATE_TEST_SUITE_P(Problems, EstimateAgainstOracle,
