@@ -38,12 +38,23 @@ constexpr double kRjSpread = 2567.0; // (2.5e-21)^(-1/6)
 // l = sqrt(x y) + sqrt(x z) + sqrt(y z), until the three arguments agree; then the series in the
 // elementary symmetric functions E2, E3 of the scaled deviations X = (A_0 - x) / (4^n A_n), ...
 // (DLMF 19.36.1).
+// R_F and R_J diverge when two of x, y, z vanish; the duplication would then never converge.
+template <class T>
+bool two_zero(T x, T y, T z) {
+    return (x == 0) + (y == 0) + (z == 0) >= 2;
+}
+
+// Duplications at most: each divides the arguments' relative spread by 4, and the spread starts
+// below 4 (R_F) or 6 (R_J) times Carlson's Q / |A_0|, so 40 is far more than any input needs.
+constexpr int kMaxDuplications = 40;
+
 template <class T>
 T carlson_rf(T x, T y, T z) {
+    if (two_zero(x, y, z)) return std::numeric_limits<T>::infinity();
     const T a0 = (x + y + z) / 3;
     const T q = T(kRfSpread) * std::max({std::abs(a0 - x), std::abs(a0 - y), std::abs(a0 - z)});
     T xn = x, yn = y, zn = z, a = a0, scale = 1; // scale = 4^-n
-    while (scale * q >= std::abs(a)) {
+    for (int n = 0; n < kMaxDuplications && scale * q >= std::abs(a); ++n) {
         const T sx = std::sqrt(xn), sy = std::sqrt(yn), sz = std::sqrt(zn);
         const T l = sx * sy + sx * sz + sy * sz;
         xn = (xn + l) / 4, yn = (yn + l) / 4, zn = (zn + l) / 4, a = (a + l) / 4;
@@ -63,12 +74,13 @@ T carlson_rf(T x, T y, T z) {
 // E5 = XYZ P^2 (DLMF 19.36.2).
 template <class T>
 T carlson_rj(T x, T y, T z, T p) {
+    if (two_zero(x, y, z)) return std::numeric_limits<T>::infinity();
     const T a0 = (x + y + z + 2 * p) / 5;
     const T delta = (p - x) * (p - y) * (p - z);
     const T q = T(kRjSpread) *
                 std::max({std::abs(a0 - x), std::abs(a0 - y), std::abs(a0 - z), std::abs(a0 - p)});
     T xn = x, yn = y, zn = z, pn = p, a = a0, scale = 1, sum = 0;
-    while (scale * q >= std::abs(a)) {
+    for (int n = 0; n < kMaxDuplications && scale * q >= std::abs(a); ++n) {
         const T sx = std::sqrt(xn), sy = std::sqrt(yn), sz = std::sqrt(zn), sp = std::sqrt(pn);
         const T l = sx * sy + sx * sz + sy * sz;
         const T d = (sp + sx) * (sp + sy) * (sp + sz);

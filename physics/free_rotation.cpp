@@ -56,6 +56,17 @@ Real third_kind_excess(Real n, Real sn, Real cn2, Real dn2) {
     return n / 3 * sn * sn * sn * carlson_rj(cn2, dn2, Real(1), 1 - n * sn * sn);
 }
 
+// The same on the separatrix (k = 1, sn = tanh u, am u = gd u), in closed form: with s = sin t,
+// Pi(n; phi, 1) = int_0^sin(phi) ds / ((1 - n s^2)(1 - s^2))
+//              = (atanh(sin phi) + sqrt(-n) atan(sqrt(-n) sin phi)) / (1 - n)   (n < 0),
+// and atanh(tanh u) = u, so Pi - u = (n u + sqrt(-n) atan(sqrt(-n) tanh u)) / (1 - n). Valid for
+// every u, where Carlson's form would need cn^2 = dn^2 = sech^2 u, which underflows to 0 beyond
+// |u| ~ 355 (a long step on the separatrix).
+Real separatrix_excess(Real n, Real u) {
+    const Real root = std::sqrt(-n);
+    return (n * u + root * std::atan(root * std::tanh(u))) / (1 - n);
+}
+
 } // namespace
 
 const char* free_regime_name(FreeRegime regime) {
@@ -110,9 +121,20 @@ FreeRotation::FreeRotation(const Vec3& inertia, const Quat& q0, const Vec3& w0)
         regime_ = FreeRegime::PrincipalSpin;
         axis_s_ = along;
         I_t_ = I[(along + 1) % 3]; // any value works: m stays along e_s (section 2)
-    } else {
-        setup_jacobi(lo, mid, hi);
+    } else if (setup_jacobi(lo, mid, hi)) {
         return;
+    } else {
+        // The Jacobi quantities underflowed: the squares of two components of m vanish beside
+        // the third's (m off a principal axis by less than ~1e-154 rad) or |L| itself is below
+        // ~1e-154 (a body turning by less than that per second). The spin about the axis of the
+        // largest component is then the motion to every digit a double holds.
+        int a = 0;
+        for (int b = 1; b < 3; ++b)
+            if (std::abs(m0_[b]) > std::abs(m0_[a])) a = b;
+        regime_ = FreeRegime::PrincipalSpin;
+        axis_s_ = a;
+        I_t_ = I[(a + 1) % 3];
+        separatrix_ = std::numeric_limits<double>::infinity();
     }
     lambda_ = m0_[axis_s_] * (1.0 / I[axis_s_] - 1.0 / I_t_);
 }
@@ -122,7 +144,7 @@ FreeRotation::FreeRotation(const Vec3& inertia, const Quat& q0, const Vec3& w0)
 //   mc = (I_r - I_p)(|L|^2 - 2E I_q) / ((I_r - I_q)(|L|^2 - 2E I_p)),
 // because (I_r - I_q) a_p - (I_q - I_p) a_r = (I_r - I_p)(|L|^2 - 2E I_q) with
 // a_r = 2E I_r - |L|^2, a_p = |L|^2 - 2E I_p. Every factor has the sign that makes mc >= 0.
-void FreeRotation::setup_jacobi(int lo, int mid, int hi) {
+bool FreeRotation::setup_jacobi(int lo, int mid, int hi) {
     const Vec3& I = inertia_;
     const auto sq = [&](int a) { return Real(m0_[a]) * m0_[a]; };
     const auto ratio = [&](int a, int b) { return Real(I[a]) / I[b]; };
@@ -157,6 +179,8 @@ void FreeRotation::setup_jacobi(int lo, int mid, int hi) {
     const Real h = std::sqrt(c_raw * c_raw + s_raw * s_raw);
     const Real c0 = c_raw / h, s0 = s_raw / h;
     const Real d0 = c0 * c0 + ladder_.mc * s0 * s0; // dn^2 = 1 - k^2 sn^2
+    if (!(alpha_ > 0 && beta_ > 0 && d0 > 0 && std::isfinite(c0 + s0 + nu_ + ladder_.mc)))
+        return false; // underflow (the constructor says when)
     // The amplitudes anchored to the state: alpha cn u0 = m_p, beta sn u0 = m_q, gamma dn u0 = m_r
     // to rounding. From the invariants alone they would carry the rounding of constants made
     // from I (I_r / I_p - 1, ...), the same every step. Anchored, the reconstruction is exact at
@@ -169,12 +193,14 @@ void FreeRotation::setup_jacobi(int lo, int mid, int hi) {
     const Jacobi<Real> e0 = jacobi(r0_, ladder_);
     m_pqr0_ = Vec3(mp, mq, mr);
     mtilde0_ = Vec3(flip_ * alpha_ * e0.cn, flip_ * beta_ * e0.sn, gamma_ * e0.dn);
-    Pi0_ = r0_ + third_kind_excess(n_, s0, c0 * c0, d0);
+    Pi0_ = r0_ +
+           (ladder_.mc == 0 ? separatrix_excess(n_, r0_) : third_kind_excess(n_, s0, c0 * c0, d0));
     phi_rate_ = L_norm_ / Ir;
     phi_pi_ = L_norm_ * (Ir - Ip) / (Ir * Ip * nu_);
 
     // Invariant frame (section 3.3): R_pqr(t) = W Z(phi(t)) B(m(t)), W = R0 B(m0)^T, phi(0) = 0.
     B0t_ = invariant_from_body(Vec3L(mp, mq, mr)).transpose();
+    return true;
 }
 
 // u = r0 + nu t = 2 K j + r with |r| <= K (section 3.4): sn, cn change sign with j, dn does not,
@@ -191,7 +217,9 @@ FreeRotation::JacobiPoint FreeRotation::jacobi_point(double t) const {
     // proportion to the increment (free_rotation.h, "Rounding").
     const Vec3 mt(sign * alpha_ * e.cn, sign * beta_ * e.sn, gamma_ * e.dn);
     out.m = m_pqr0_.cast<Wide>() + (mt - mtilde0_).cast<Wide>();
-    Real dPi = r + third_kind_excess(n_, e.sn, e.cn * e.cn, e.dn * e.dn) - Pi0_;
+    const Real excess = ladder_.mc == 0 ? separatrix_excess(n_, r)
+                                        : third_kind_excess(n_, e.sn, e.cn * e.cn, e.dn * e.dn);
+    Real dPi = r + excess - Pi0_;
     if (j != 0) // the complete Pi(n, k) = K + n/3 R_J(0, mc, 1, 1 - n), only when crossed
         dPi += 2 * j * (K_ + n_ / 3 * carlson_rj(Real(0), ladder_.mc, Real(1), 1 - n_));
     // Section 3.4: phi(t) = |L| t / I_r + |L| (I_r - I_p) / (I_r I_p nu) (Pi(am u) - Pi(am u0)).

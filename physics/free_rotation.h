@@ -59,7 +59,7 @@ class FreeRotation {
 
   private:
     bool is_jacobi() const { return regime_ >= FreeRegime::AroundLargestAxis; }
-    void setup_jacobi(int lo, int mid, int hi);
+    bool setup_jacobi(int lo, int mid, int hi); // false if its quantities underflow
     struct JacobiPoint {
         Eigen::Matrix<long double, 3, 1> m; // body momentum, (p, q, r) frame
         long double phi; // angle about L of the invariant frame (section 3.3), rad

@@ -143,6 +143,15 @@ TEST(Elliptic, NearTheSeparatrixFollowTheExpansionAboutKEqualsOne) {
     EXPECT_LT(worst_k, 1e-15);
 }
 
+TEST(Elliptic, DivergentIntegralsAreInfiniteNotEndless) {
+    // Two zero arguments make R_F and R_J diverge (their duplication would never converge);
+    // one zero is the usual complete case, K = R_F(0, k'^2, 1).
+    EXPECT_TRUE(std::isinf(carlson_rf(0.0, 0.0, 1.0)));
+    EXPECT_TRUE(std::isinf(carlson_rj(0.0, 0.0, 1.0, 2.0)));
+    EXPECT_TRUE(std::isfinite(carlson_rf(0.0, 0.5, 1.0)));
+    EXPECT_NEAR(carlson_rf(0.0, 0.75, 1.0), complete_k(agm_ladder(0.75)), 1e-15);
+}
+
 TEST(Elliptic, IdentitiesHoldToRoundOff) {
     // sn^2 + cn^2 = 1 and dn^2 + k^2 sn^2 = 1 (dn^2 - mc sn^2 = cn^2 without cancellation),
     // and sn(K) = 1, cn(K) = 0, dn(K) = k'.

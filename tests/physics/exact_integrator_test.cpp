@@ -235,6 +235,26 @@ TEST(ExactIntegrator, MatchesTheReferenceAtLongSteps) {
     }
 }
 
+TEST(ExactIntegrator, OneLongStepAlongTheSeparatrixEndsAtTheUnstableSpin) {
+    // On the separatrix the motion tends to the spin about the middle axis, m -> +-|L| e_mid (the
+    // heteroclinic orbit: m = (alpha sech u, beta tanh u, gamma sech u) with beta = |L|). One step
+    // of 1000 s, where sech u underflows to 0, must land there, finite (measured: m_mid / |L| off
+    // 1 by 2.2e-16, the other components 2.9e-16 of |L|).
+    const BodyDef on = with_moments(Vec3(1.5, 3.0, 4.0), Quat::Identity(), Vec3(1.0, 0.3, 0.75));
+    World w = make_world(alone(on, 1000.0), Integrator::Exact, 1000.0);
+    const Vec3 I = w.model.inertia[0];
+    const double L = I.cwiseProduct(w.state.w[0]).norm();
+    testing::run(w, 1);
+    const Vec3 m = I.cwiseProduct(w.state.q[0].conjugate() * w.state.w[0]);
+    ASSERT_TRUE(m.allFinite() && w.state.q[0].coeffs().allFinite());
+    const double along = std::abs(std::abs(m.y()) / L - 1.0),
+                 across = Vec3(m.x(), 0, m.z()).norm() / L;
+    TUMBLE_MEASURED(along, 1e-14);
+    TUMBLE_MEASURED(across, 1e-14);
+    EXPECT_LT(along, 1e-14);
+    EXPECT_LT(across, 1e-14);
+}
+
 TEST(ExactIntegrator, StepsOnAndNearTheSeparatrixWithoutFailing) {
     // The oracle refuses |L|^2 - 2 E I_mid within 1e-12 |L|^2; `exact` steps there, in the
     // complementary parameter, with nothing thrown or replaced: against the reference over 6 s at
@@ -318,6 +338,27 @@ TEST(ExactIntegrator, BodiesAtRestStayPutAndSpheresTurnAtTheirSpin) {
     TUMBLE_MEASURED(angle, 1e-14); // measured 7.6e-16
     EXPECT_LT(angle, 1e-14);
     EXPECT_EQ(b.state.w[0], w0);
+}
+
+TEST(ExactIntegrator, UnderflowingWobblesAndSpinsStayFinite) {
+    // A wobble of 1e-170 rad/s about the book's middle axis, whose squares underflow: the motion
+    // is the spin about that axis to every digit (the unstable wobble needs ~120 s to reach
+    // 1e-16), q(t) = exp(t w) q0. And a spin of 1e-160 rad/s: it turns by nothing a double holds.
+    BodyDef b = scenes::book();
+    b.angular_velocity = Vec3(6.0, 1e-170, 1e-170);
+    World w = make_world(alone(b, 10.0), Integrator::Exact, 0.1);
+    testing::run(w, 100);
+    const Quat expected(Eigen::AngleAxisd(60.0, Vec3::UnitX()));
+    const double angle = rotation_angle_between(w.state.q[0], expected);
+    TUMBLE_MEASURED(angle, 1e-13); // measured 1.3e-14
+    EXPECT_LT(angle, 1e-13);
+    EXPECT_TRUE(w.state.w[0].allFinite());
+
+    b.angular_velocity = 1e-160 * Vec3(1.0, 2.0, 3.0);
+    World slow = make_world(alone(b, 10.0), Integrator::Exact, 0.1);
+    testing::run(slow, 100);
+    EXPECT_TRUE(slow.state.q[0].coeffs().allFinite() && slow.state.w[0].allFinite());
+    EXPECT_LT(rotation_angle_between(slow.state.q[0], Quat::Identity()), 1e-150);
 }
 
 TEST(ExactIntegrator, RefusesAnAppliedTorqueNamingTheBodyAndField) {
