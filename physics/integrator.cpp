@@ -55,15 +55,15 @@ constexpr IntegratorInfo kIntegrators[] = {
      "energy and world L to round-off; no error but round-off (no applied torques)",
      "exact torque-free motion (Euler-Jacobi) and exact flight under constant forces; refuses "
      "applied torques",
-     integrate_exact, 26.5, true, true},
+     integrate_exact, 13.2, true, true},
     {Integrator::SplittingExact, "splitting_exact", 2,
      "without torque as exact; L changes by exactly h tau per step under a torque",
      "Strang splitting: half kicks of the loads around the exact free flow (Celledoni et al. "
      "2008)",
-     integrate_splitting_exact, 26.5, true, false},
+     integrate_splitting_exact, 13.2, true, false},
     {Integrator::Splitting4Exact, "splitting4_exact", 4, "as splitting_exact",
      "fourth-order composition (Suzuki, five substeps) of splitting_exact",
-     integrate_splitting4_exact, 132.0, true, false},
+     integrate_splitting4_exact, 66.2, true, false},
 };
 
 // The handles index the table: one row per enumerator, in order.

@@ -51,8 +51,8 @@ struct IntegratorInfo {
     std::string_view summary;   // one line for `tumble explain` and --help
     IntegrateFn integrate;      // defined in integrator_<name>.cpp
     // Cost of one body-step relative to symplectic_euler's, measured (docs/integrators.md, the
-    // ns / body-step column; the exact rows by bench/integrators_bench books/*: 1623 and 8104
-    // against 61 ns): the cost model with which "auto" compares plans (accuracy_plan.h).
+    // ns / body-step column; the exact rows by bench/integrators_bench books/*, medians of 3: 808, 809
+    // and 4055 against 61 ns): the cost model with which "auto" compares plans (accuracy_plan.h).
     double cost = 1.0;
     // Steps a torque-free body by its exact motion (free_rotation.h): no truncation error without
     // torque, whatever h, and so no order to see on a torque-free scene.
