@@ -19,16 +19,9 @@
 namespace tumble::physics {
 
 void integrate_splitting4_exact(const Model& m, State& s, double h, std::span<const int> bodies) {
-    const double g = 0.4144907717943757; // 1 / (4 - 4^(1/3))
-    const double middle = 1.0 - 4.0 * g;
     const bool loads = loads_on(m);
-    for (int i : bodies) {
-        splitting_exact_step(m, s, i, g * h, loads);
-        splitting_exact_step(m, s, i, g * h, loads);
-        splitting_exact_step(m, s, i, middle * h, loads);
-        splitting_exact_step(m, s, i, g * h, loads);
-        splitting_exact_step(m, s, i, g * h, loads);
-    }
+    for (int i : bodies)
+        suzuki_composition(h, [&](double tau) { splitting_exact_step(m, s, i, tau, loads); });
 }
 
 } // namespace tumble::physics

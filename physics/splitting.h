@@ -24,4 +24,18 @@ void exact_free_rotation(const Model& model, State& state, int body, double h);
 // One kick, exact free flow, kick step of body i (integrator_splitting_exact.cpp).
 void splitting_exact_step(const Model& model, State& state, int body, double h, bool loads);
 
+// Suzuki's fourth-order composition of a time-symmetric second-order step S (integrator_splitting4
+// .cpp derives it): S(g h) S(g h) S((1 - 4 g) h) S(g h) S(g h), g = 1 / (4 - 4^(1/3)). `step(tau)`
+// performs S for time tau; shared by splitting4 and splitting4_exact.
+template <class Step>
+inline void suzuki_composition(double h, Step&& step) {
+    const double g = 0.4144907717943757; // 1 / (4 - 4^(1/3))
+    const double middle = 1.0 - 4.0 * g;
+    step(g * h);
+    step(g * h);
+    step(middle * h);
+    step(g * h);
+    step(g * h);
+}
+
 } // namespace tumble::physics
