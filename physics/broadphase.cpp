@@ -77,11 +77,17 @@ void BroadPhase::Grid::build(const std::vector<int>& members, const std::vector<
     }
 }
 
+bool BroadPhase::in_grid(const Aabb& b) const {
+    // |centre / c| < 2^30 on every axis: a cell index and its neighbours (+-1) fit in 32 bits.
+    // False for a box that is not finite (NaN or infinite centre).
+    const Vec3 cells = 0.5 * (b.lo + b.hi) / cell_;
+    return (cells.array().abs() < kGridRange).all();
+}
+
 BroadPhase::Cell BroadPhase::cell_of(const Aabb& b) const {
-    // Clamped so that absurd coordinates cannot overflow; such bodies only share cells.
+    // Only for boxes in_grid(): the floor is within +-2^30, exact in an int32.
     auto coord = [&](double lo, double hi) {
-        const double c = std::floor(0.5 * (lo + hi) / cell_);
-        return static_cast<std::int32_t>(std::clamp(c, -1e9, 1e9));
+        return static_cast<std::int32_t>(std::floor(0.5 * (lo + hi) / cell_));
     };
     return {coord(b.lo.x(), b.hi.x()), coord(b.lo.y(), b.hi.y()), coord(b.lo.z(), b.hi.z())};
 }
@@ -93,7 +99,8 @@ void BroadPhase::build(const Model& m, const std::vector<Aabb>& box,
     is_large_.assign(n, 0);
     querying_.assign(n, 0);
     for (int i = 0; i < n; ++i)
-        if (m.shape[i].kind != ShapeKind::Plane && m.is_dynamic(i))
+        if (m.shape[i].kind != ShapeKind::Plane && m.is_dynamic(i) &&
+            std::isfinite(largest_extent(box[i])))
             extent_.push_back(largest_extent(box[i]));
     // Cell edge: the largest extent among bodies at most 4x the median dynamic extent.
     double limit = 1.0;
@@ -113,7 +120,7 @@ void BroadPhase::build(const Model& m, const std::vector<Aabb>& box,
         const bool querying = m.is_dynamic(i) && awake[i];
         if (querying) queries_.push_back(i), querying_[i] = 1;
         const double e = largest_extent(box[i]);
-        if (e > limit) {
+        if (!(e <= limit)) { // larger than the typical body, or not finite (NaN, infinity)
             large_.push_back(i);
             is_large_[i] = 1;
         } else {
@@ -122,6 +129,20 @@ void BroadPhase::build(const Model& m, const std::vector<Aabb>& box,
         }
     }
     if (!(cell_ > 0.0)) cell_ = 1.0;
+    // A body beyond the grid's range (2^30 cells from the origin: a body thrown or diverging far
+    // away) has no cell that fits in 32 bits; it joins the large list, which finds its partners by
+    // testing boxes directly. Correct for any body, and rare, so the cost does not matter.
+    auto outside = [&](int i) {
+        if (in_grid(box[i])) return false;
+        large_.push_back(i);
+        is_large_[i] = 1;
+        ++outside_grid_;
+        return true;
+    };
+    outside_grid_ = 0;
+    std::erase_if(small_awake, outside);
+    std::erase_if(resting_, outside);
+    if (outside_grid_ > 0) std::sort(large_.begin(), large_.end());
     cell_of_body_.resize(n);
     for (int i : small_awake) cell_of_body_[i] = cell_of(box[i]);
     for (int i : resting_) cell_of_body_[i] = cell_of(box[i]);

@@ -15,7 +15,9 @@
 // the body's own), an awake and a resting body through all 27 cells of the resting grid, which is
 // skipped when empty. Bodies much larger than the typical one (a floor slab, a wall, a fast body's
 // long box) would force a huge cell, so they go to a short "large" list tested against everything
-// instead; planes are tested against every awake body by their clearance.
+// instead, as are the rare bodies beyond the grid's range (2^30 cells from the origin) or with a
+// box that is not finite (a diverging body): their cells would overflow 32 bits. Planes are tested
+// against every awake body by their clearance.
 #include "physics/collide.h"
 #include "physics/contact_cache.h"
 #include "physics/model.h"
@@ -40,6 +42,10 @@ class BroadPhase {
 
     const std::vector<int>& queries() const { return queries_; } // awake dynamic bodies
     double cell_size() const { return cell_; }
+    // Bodies the last build() found beyond the grid's range (kGridRange cells from the origin,
+    // or a box that is not finite): they were tested as large bodies instead.
+    int outside_grid() const { return outside_grid_; }
+    static constexpr double kGridRange = 1073741824.0; // 2^30 cells
 
     struct Cell {
         std::int32_t x, y, z;
@@ -61,9 +67,11 @@ class BroadPhase {
                    const std::vector<Aabb>& boxes, std::vector<int>& cursor);
         std::uint32_t bucket(const Cell& c) const;
     };
-    Cell cell_of(const Aabb& b) const;
+    bool in_grid(const Aabb& b) const;
+    Cell cell_of(const Aabb& b) const; // only for boxes in_grid()
 
     double cell_ = 1.0;
+    int outside_grid_ = 0;
     Grid awake_grid_, rest_grid_;
     std::vector<Cell> cell_of_body_;
     std::vector<int> large_, planes_, queries_, resting_, cursor_;
