@@ -1,4 +1,4 @@
-#include "app/run/interrupt.h"
+#include "io/interrupt.h"
 
 #include "io/temporary_files.h"
 
@@ -6,7 +6,7 @@
 #include <csignal>
 #include <unistd.h>
 
-namespace tumble::app {
+namespace tumble::io {
 namespace {
 
 // Signal handlers may only touch lock-free atomics; this is the one piece of process-wide
@@ -31,8 +31,9 @@ void say(const char* text, std::size_t size) {
 
 extern "C" void on_signal(int sig) {
     if (g_signal.exchange(sig) != 0) leave_at_once(sig);
-    static const char message[] = "\ntumble: interrupted: finishing what is done so far (again to "
-                                  "quit at once)\n";
+    static const char message[] =
+        "\ntumble: interrupted: stopping; what is complete is kept (again to "
+        "quit at once)\n";
     say(message, sizeof message - 1);
 }
 
@@ -59,4 +60,13 @@ int InterruptGuard::signal_number() {
     return g_signal.load(std::memory_order_relaxed);
 }
 
-} // namespace tumble::app
+void InterruptGuard::stop_if_requested(const std::string& stage) {
+    if (requested()) throw Interrupted(stage, signal_number());
+}
+
+Interrupted::Interrupted(const std::string& stage, int sig)
+    : std::runtime_error("interrupted by signal " + std::to_string(sig) + " during " + stage +
+                         "; nothing was written"),
+      signal_number(sig) {}
+
+} // namespace tumble::io

@@ -3,7 +3,18 @@
 // and finish its outputs (so a video plays); a second one exits at once, deleting the temporary
 // files of outputs still in progress (io/temporary_files.h), so nothing half-written is left. The
 // exit code is then 128 + signal number (130 for SIGINT, 143 for SIGTERM), as shells expect.
-namespace tumble::app {
+// A stage with nothing worth keeping yet (camera.auto's pre-pass, auto's pilot runs, a study's
+// case) stops at the first signal instead: it throws Interrupted, which run_guarded() (app/cli/
+// failure.h) turns into that exit code, and the outputs in progress are deleted as for any failure.
+#include <stdexcept>
+#include <string>
+
+namespace tumble::io {
+
+struct Interrupted : std::runtime_error {
+    Interrupted(const std::string& stage, int signal_number);
+    int signal_number;
+};
 
 class InterruptGuard {
   public:
@@ -14,6 +25,8 @@ class InterruptGuard {
 
     static bool requested();    // a signal arrived
     static int signal_number(); // which one (0 if none)
+    // Throws Interrupted naming `stage` ("camera.auto's pre-pass") when a signal arrived.
+    static void stop_if_requested(const std::string& stage);
 };
 
-} // namespace tumble::app
+} // namespace tumble::io

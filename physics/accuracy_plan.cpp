@@ -32,7 +32,7 @@ struct Pilot {
 };
 
 Pilot run_pilot(const Model& model, const State& initial, Integrator id, int k, double base,
-                std::int64_t base_steps, const Tolerance& tol) {
+                std::int64_t base_steps, const Tolerance& tol, const StopCheck& stop) {
     Model m = model;
     m.integrator = id;
     m.dt = base / k;
@@ -42,7 +42,7 @@ Pilot run_pilot(const Model& model, const State& initial, Integrator id, int k, 
     p.trial.steps = base_steps * k;
     p.trial.cost = run_cost(model, id, p.trial.steps);
     try {
-        RunEstimate r = estimate_run(m, initial, p.trial.steps, p.trial.steps);
+        RunEstimate r = estimate_run(m, initial, p.trial.steps, p.trial.steps, stop);
         p.trial.error = largest_error(r.bodies, tol);
         p.estimate = std::move(r.bodies);
     } catch (const DivergenceError&) {
@@ -130,7 +130,8 @@ AccuracyPlan plan_accuracy(const Model& model, const State& initial, double base
                 (!next || pilot_cost(model, c, base_steps) < pilot_cost(model, *next, base_steps)))
                 next = &c;
         if (!next || pilot_cost(model, *next, base_steps) >= best) break;
-        Pilot p = run_pilot(model, initial, next->id, next->k, base, base_steps, tol);
+        Pilot p =
+            run_pilot(model, initial, next->id, next->k, base, base_steps, tol, settings.stop);
         p.trial.accepted = !p.trial.diverged && p.trial.error <= settings.accept;
         plan.trials.push_back(p.trial);
         ++next->pilots;

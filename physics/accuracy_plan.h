@@ -74,10 +74,12 @@ struct PlanSettings {
     int max_k = 1 << 20; // h >= base / max_k
     int max_pilots_per_integrator = 6;
     std::vector<Integrator> only; // the candidates; empty: every integrator of the registry
+    StopCheck stop;               // polled during each pilot (stop.h): Ctrl-C
 };
 
 // Plans a run of `model` (its integrator and dt are ignored) from `initial` over base_steps steps
-// of `base` seconds. Throws ModelError for a model no integrator can estimate (no dynamic body).
+// of `base` seconds. Throws ModelError for a model no integrator can estimate (no dynamic body),
+// Stopped when settings.stop asks.
 AccuracyPlan plan_accuracy(const Model& model, const State& initial, double base,
                            std::int64_t base_steps, const Tolerance& tol,
                            const PlanSettings& settings = {});

@@ -112,7 +112,7 @@ void ErrorEstimator::advance(const State& main) {
 }
 
 RunEstimate estimate_run(const Model& model, const State& initial, std::int64_t steps,
-                         std::int64_t sample_every) {
+                         std::int64_t sample_every, const StopCheck& stop) {
     if (sample_every < 1) throw std::invalid_argument("estimate_run: sample_every must be >= 1");
     RunEstimate out;
     out.final_state = initial;
@@ -120,6 +120,7 @@ RunEstimate estimate_run(const Model& model, const State& initial, std::int64_t 
     ErrorEstimator e(model, initial);
     StepWorkspace workspace(1);
     for (std::int64_t k = 1; k <= steps; ++k) {
+        poll_stop(stop, k);
         step(model, s, workspace);
         e.advance(s);
         if (k % sample_every != 0 && k != steps) continue;

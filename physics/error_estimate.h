@@ -30,6 +30,7 @@
 #include "physics/model.h"
 #include "physics/state.h"
 #include "physics/step.h"
+#include "physics/stop.h"
 
 #include <cstdint>
 #include <limits>
@@ -133,8 +134,9 @@ struct RunEstimate {
 };
 
 // Steps `initial` `steps` times with `model`, estimating as it goes. Throws what step() throws
-// (DivergenceError of the main run) and ShadowDivergenceError. `sample_every` >= 1.
+// (DivergenceError of the main run), ShadowDivergenceError, and Stopped when `stop` asks
+// (stop.h). `sample_every` >= 1.
 RunEstimate estimate_run(const Model& model, const State& initial, std::int64_t steps,
-                         std::int64_t sample_every);
+                         std::int64_t sample_every, const StopCheck& stop = {});
 
 } // namespace tumble::physics

@@ -8,8 +8,8 @@
 #include "app/cli/render_setup.h"
 #include "app/cli/subcommand.h"
 #include "app/run/auto_camera.h"
+#include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
-#include "app/run/simulation.h"
 #include "io/bad_input.h"
 
 #include <cstdlib>
@@ -122,16 +122,16 @@ PipelineStats run_once(const BenchCase& c, int frames, const std::string& output
     }
     apply_render_overrides(cmd, scene);
     scene.duration = double(frames) / scene.render.fps;
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
-    frame_automatically(scene, tl); // camera.auto: a pre-pass over the run
-    Simulation sim = make_simulation(scene, tl.h);
+    PreparedRun run = prepare_run(std::move(scene));
+    frame_automatically(run.scene, run.timeline); // camera.auto: a pre-pass over the run
+    const Timeline& tl = run.timeline;
     render::SinkOptions so;
-    so.width = scene.render.width;
-    so.height = scene.render.height;
-    so.fps = scene.render.fps;
+    so.width = run.scene.render.width;
+    so.height = run.scene.render.height;
+    so.fps = run.scene.render.fps;
     so.preset = video_preset(cmd); // as `tumble render` would encode it
     auto sink = render::open_sink(output, so);
-    const RunResult r = render_frames(scene, tl, sim, *sink, 0, tl.frames - 1, true);
+    const RunResult r = render_frames(run.scene, tl, run.sim, *sink, 0, tl.frames - 1, true);
     // Finishing is part of the run: the encoder's last frames, and for a GIF both of its
     // palette passes over the spooled frames.
     PipelineStats stats = r.stats;

@@ -8,11 +8,12 @@
 
 #include "app/cli/failure.h"
 #include "app/run/auto_camera.h"
-#include "app/run/interrupt.h"
+#include "app/run/prepare_run.h"
 #include "app/run/progress.h"
 #include "app/run/render_frames.h"
 #include "app/run/side_by_side.h"
 #include "app/scene/scene_error.h"
+#include "io/interrupt.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -58,28 +59,32 @@ void print_summary(const SideBySide& tiles, const render::FrameSink& sink, std::
 
 int run_compare(const RenderCommand& command) {
     RenderCommand cmd = command;
-    if (cmd.common.integrator)
-        throw SceneError("--integrator", *cmd.common.integrator,
+    io::InterruptGuard guard; // from the start: no signal can leave the output half-written
+    if (cmd.common.run.integrator)
+        throw SceneError("--integrator", *cmd.common.run.integrator,
                          "not with --compare, which names the integrators itself");
-    Scene scene = load_for_command(cmd.common);
-    apply_render_overrides(cmd, scene);
-    if (!cmd.overlay) scene.render.overlay = true; // each tile is labelled by its overlay
+    Scene loaded = load_for_command(cmd.common);
+    apply_render_overrides(cmd, loaded);
+    if (!cmd.overlay) loaded.render.overlay = true; // each tile is labelled by its overlay
     const auto methods = parse_methods(cmd.compare);
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    // The lanes name their integrators: a tolerance is checked for each, not chosen for.
+    loaded.accuracy.auto_integrator = false;
+    RunPlan plan = plan_run(std::move(loaded));
+    Scene& scene = plan.scene;
+    const Timeline& tl = plan.timeline;
     if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
     const std::int64_t first = cmd.frame.value_or(0), last = cmd.frame.value_or(tl.frames - 1);
     tune_allocator_for_rendering();
-    InterruptGuard guard; // from before the output exists: no signal can leave it half-written
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output_name(cmd, scene, "-compare"));
-    frame_automatically(scene, tl); // camera.auto, once input and output are known to be good
+    frame_automatically(scene, tl, cmd.common.quiet); // camera.auto, once outputs are good
     SideBySide tiles(scene, methods, tl, cmd.common.threads, first, last);
     render::Image frame;
     Progress progress("comparing", last - first + 1, cmd.common.quiet);
     std::int64_t written = 0;
-    for (std::int64_t k = first; k <= last && !InterruptGuard::requested(); ++k) {
+    for (std::int64_t k = first; k <= last && !io::InterruptGuard::requested(); ++k) {
         tiles.draw_next(frame);
         sink->write(frame);
         progress.update(++written);
@@ -90,7 +95,8 @@ int run_compare(const RenderCommand& command) {
     else
         sink->abort(); // interrupted before the first frame: nothing worth keeping
     if (!cmd.common.quiet) print_summary(tiles, *sink, written);
-    if (InterruptGuard::requested()) return interrupted_exit_code(InterruptGuard::signal_number());
+    if (io::InterruptGuard::requested())
+        return interrupted_exit_code(io::InterruptGuard::signal_number());
     return kOk;
 }
 

@@ -4,9 +4,9 @@
 #include "app/cli/scene_options.h"
 #include "app/cli/subcommand.h"
 #include "app/run/accuracy_choice.h"
-#include "app/run/simulation.h"
-#include "app/run/timeline.h"
+#include "app/run/prepare_run.h"
 #include "app/study/contact_check.h"
+#include "io/interrupt.h"
 #include "physics/error_estimate.h"
 
 #include <cstdio>
@@ -143,10 +143,11 @@ void print_contact_checks(const physics::Model& m, const physics::State& s) {
 }
 
 int run_explain(const SceneOptions& opts) {
-    Scene scene = load_for_command(opts);
-    resolve_auto_integrator(scene);
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
-    const Simulation sim = make_simulation(scene, tl.h);
+    io::InterruptGuard guard; // auto's pilot runs stop on Ctrl-C
+    const PreparedRun run = prepare_run(load_for_command(opts), {1, false});
+    const Scene& scene = run.scene;
+    const Timeline& tl = run.timeline;
+    const Simulation& sim = run.sim;
     std::printf("scene: %s%s%s\n", scene.source.c_str(), scene.title.empty() ? "" : " - ",
                 scene.title.c_str());
     const physics::Vec3& g = sim.model.gravity;

@@ -1,6 +1,7 @@
 #include "app/cli/failure.h"
 
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 
 #include <cstdio>
 #include <new>
@@ -8,11 +9,14 @@
 namespace tumble::app {
 
 int exit_code_of(const std::exception& e) {
+    if (const auto* i = dynamic_cast<const io::Interrupted*>(&e))
+        return interrupted_exit_code(i->signal_number);
     return dynamic_cast<const io::BadInput*>(&e) ? kBadInput : kRunFailed;
 }
 
 int report_failure(const std::exception& e) {
-    std::fprintf(stderr, "tumble: error: %s\n", e.what());
+    const bool interrupted = dynamic_cast<const io::Interrupted*>(&e) != nullptr;
+    std::fprintf(stderr, "tumble: %s%s\n", interrupted ? "" : "error: ", e.what());
     return exit_code_of(e);
 }
 

@@ -6,7 +6,9 @@
 //      context failed, a write or rename failed - anything that is not the user's input
 //   2  bad input: a scene (file and place named), an option, an output name or folder
 //      (io::BadInput and its subclasses, and command-line parse errors)
-//   128 + signal  interrupted by Ctrl-C (130) or SIGTERM (143), outputs finished first
+//   128 + signal  interrupted by Ctrl-C (130) or SIGTERM (143): outputs finished first when
+//      frames were made, else (a stage before the frames: io/interrupt.h)
+//      none left behind
 // Commands throw; main() runs each through run_guarded(), the only place that catches.
 #include <exception>
 #include <functional>
@@ -15,11 +17,12 @@ namespace tumble::app {
 
 enum ExitCode { kOk = 0, kRunFailed = 1, kBadInput = 2 };
 
-// The exit code of an exception that ended a command: kBadInput for io::BadInput, else
-// kRunFailed.
+// The exit code of an exception that ended a command: 128 + signal for io::Interrupted, kBadInput
+// for io::BadInput, else kRunFailed.
 int exit_code_of(const std::exception& e);
 
-// Prints "tumble: error: <what>" to stderr and returns exit_code_of(e).
+// Prints "tumble: error: <what>" (for io::Interrupted, "tumble: <what>") to stderr and returns
+// exit_code_of(e).
 int report_failure(const std::exception& e);
 
 // Runs a command's body and returns its exit code, or the mapped code of what it threw.

@@ -10,12 +10,12 @@
 #include "app/cli/subcommand.h"
 #include "app/run/accuracy_choice.h"
 #include "app/run/auto_camera.h"
-#include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
+#include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
 #include "app/run/run_estimate.h"
-#include "app/run/simulation.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 #include "physics/diagnostics.h"
 
 #include <chrono>
@@ -144,35 +144,42 @@ int run_render(const RenderCommand& command) {
                            "--from-checkpoints");
     if (!command.compare.empty()) return run_compare(command);
     RenderCommand cmd = command;
-    Scene scene = load_for_command(cmd.common);
-    apply_render_overrides(cmd, scene);
-    resolve_auto_integrator(scene); // world.integrator "auto": for these frame times
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
+    // From the start: auto's pilots and camera.auto's pre-pass stop on Ctrl-C too, and no signal
+    // can leave the output half-written (on an exception the sink's destructor deletes it).
+    io::InterruptGuard guard;
+    Scene loaded = load_for_command(cmd.common);
+    apply_render_overrides(cmd, loaded);
+    PreparedRun run = prepare_run(std::move(loaded), {cmd.common.threads});
+    Scene& scene = run.scene;
+    const Timeline& tl = run.timeline;
+    Simulation& sim = run.sim;
     if (const std::string note = resolve_time(cmd, tl); !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     check_frame_index(cmd, tl);
     const FrameRange range = render_range(cmd, scene, tl); // --frames A:B, or the whole run
     const std::string output = output_name(cmd, scene);
-    Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
-    start_error_estimate(sim, scene, cmd.common.threads);
     if (const std::string note = threads_note(sim, cmd.common.threads);
         !note.empty() && !cmd.common.quiet)
         std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     // Checked before the output exists: a checkpoint of another run is refused leaving nothing.
     const std::optional<ResumePoint> resume = resume_point(cmd, scene, tl, sim, range);
+    if (resume && sim.estimate.estimator && scene.error_estimate.only_for_tolerance) {
+        sim.estimate = {}; // the shadow run starts at t = 0: nothing to check the tolerance with
+        if (!cmd.common.quiet)
+            std::fprintf(stderr, "tumble: note: the tolerance is not checked in a render continued "
+                                 "from a checkpoint (the check follows the run from t = 0: "
+                                 "`tumble simulate` of this scene makes it)\n");
+    }
     if (resume && sim.estimate.estimator)
         throw io::BadInput("--from-checkpoints: the error estimate (--error-estimate or "
                            "world.error_estimate) steps a second run at h/2 from t = 0, which a "
                            "checkpoint does not hold; render without --from-checkpoints, or with "
                            "--no-error-estimate");
-    // From before the output exists, so no signal can leave it half-written; on an exception the
-    // sink's destructor deletes the partial output.
-    InterruptGuard guard;
     const std::unique_ptr<render::FrameSink> sink =
         open_render_sink(cmd, scene, output, run_output(cmd, scene, tl, range, output));
     // camera.auto: a pre-pass over the run, once the input and the output are known to be good
     // (a bad output name is exit 2 before any stepping).
-    frame_automatically(scene, tl);
+    frame_automatically(scene, tl, cmd.common.quiet);
     const physics::Diagnostics d0 = physics::diagnose(sim.model, sim.state);
     const auto t0 = std::chrono::steady_clock::now();
     const RunResult r = render_frames(scene, tl, sim, *sink, range.first, range.end - 1,
@@ -188,9 +195,9 @@ int run_render(const RenderCommand& command) {
     if (!r.interrupted) return kOk;
     std::fprintf(stderr,
                  "tumble: interrupted by signal %d after %lld frames; %s is complete and plays\n",
-                 InterruptGuard::signal_number(), static_cast<long long>(r.frames),
+                 io::InterruptGuard::signal_number(), static_cast<long long>(r.frames),
                  sink->describe().c_str());
-    return interrupted_exit_code(InterruptGuard::signal_number());
+    return interrupted_exit_code(io::InterruptGuard::signal_number());
 }
 
 } // namespace

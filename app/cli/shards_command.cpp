@@ -81,8 +81,9 @@ std::string shard_output(const std::string& output, int i) {
 std::vector<std::string> shared_options(const ShardsCommand& cmd) {
     std::vector<std::string> shared;
     if (!cmd.from_checkpoints.empty()) shared = {"--from-checkpoints", cmd.from_checkpoints};
-    const SceneOptions& o = cmd.common;
+    const RunRequest& o = cmd.common.run;
     if (o.integrator) shared.insert(shared.end(), {"--integrator", *o.integrator});
+    if (o.tolerance) shared.insert(shared.end(), {"--tolerance", *o.tolerance});
     if (o.duration) shared.insert(shared.end(), {"--duration", number_text(*o.duration)});
     if (o.dt) shared.insert(shared.end(), {"--dt", number_text(*o.dt)});
     if (cmd.fps) shared.insert(shared.end(), {"--fps", std::to_string(*cmd.fps)});
@@ -105,6 +106,8 @@ std::vector<FrameRange> shard_ranges(const ShardsCommand& cmd, const Scene& scen
         throw io::BadInput("shards -o " + output +
                            ": expected the joined video (NAME.mp4) or PNG frames (frames/ or "
                            "frames/%06d.png)");
+    // The frame count only, which the step does not change: no need to plan the run (each
+    // shard's `tumble render` plans it, to the same bits).
     const Timeline tl = make_timeline(scene.world.dt, scene.duration, fps);
     return split_frames(tl.frames, png_output(output) ? 1 : key_interval(fps), cmd.count);
 }

@@ -9,15 +9,14 @@
 #include "app/cli/subcommand.h"
 #include "app/cluster/checkpoint_store.h"
 #include "app/run/accuracy_choice.h"
-#include "app/run/interrupt.h"
 #include "app/run/peak_memory.h"
+#include "app/run/prepare_run.h"
 #include "app/run/progress.h"
 #include "app/run/run_estimate.h"
-#include "app/run/simulation.h"
-#include "app/run/timeline.h"
 #include "app/run/trajectory_writer.h"
 #include "io/atomic_file.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -97,20 +96,19 @@ int run_simulate(const SimulateCommand& cmd) {
     if (cmd.output.empty() && cmd.checkpoint_every == 0)
         throw io::BadInput("simulate: expected -o FILE (the states CSV, - for standard output), "
                            "--checkpoint-every K (checkpoints only), or both");
-    Scene scene = load_for_command(cmd.common);
-    if (cmd.fps) scene.render.fps = *cmd.fps; // as `tumble render --fps`: the same frame times
-    resolve_auto_integrator(scene);           // world.integrator "auto": for these frame times
-    const Timeline tl = make_timeline(scene.world.dt, scene.duration, scene.render.fps);
-    Simulation sim = make_simulation(scene, tl.h, cmd.common.threads);
-    start_error_estimate(sim, scene, cmd.common.threads);
-    for (const std::string& note : {tl.adjustment_note(), threads_note(sim, cmd.common.threads)})
-        if (!note.empty() && !cmd.common.quiet)
-            std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
+    io::InterruptGuard guard; // from the start: the pilots stop, and no file is left half-written
+    Scene loaded = load_for_command(cmd.common);
+    if (cmd.fps) loaded.render.fps = *cmd.fps; // as `tumble render --fps`: the same frame times
+    PreparedRun run = prepare_run(std::move(loaded), {cmd.common.threads});
+    const Scene& scene = run.scene;
+    const Timeline& tl = run.timeline;
+    Simulation& sim = run.sim;
+    for (const std::string& note : run.notes(cmd.common.threads))
+        if (!cmd.common.quiet) std::fprintf(stderr, "tumble: note: %s\n", note.c_str());
     const std::string diagnostics = cmd.output.empty() ? "" : diagnostics_output(cmd);
     const std::filesystem::path checkpoints = checkpoint_folder(cmd, scene);
     for (const std::string& path : {cmd.output, diagnostics})
         if (!path.empty()) remove_stale_temporaries_for(path, cmd.common.quiet);
-    InterruptGuard guard; // from before the files exist: no signal can leave them half-written
     std::optional<TrajectoryWriter> out;
     if (!cmd.output.empty())
         out.emplace(cmd.output, diagnostics, scene, sim.estimate.estimator.get());
@@ -122,7 +120,7 @@ int run_simulate(const SimulateCommand& cmd) {
     if (out) out->write(sim.model, sim.state);
     bool interrupted = false;
     for (std::int64_t k = 1; k <= total; ++k) {
-        if (InterruptGuard::requested()) {
+        if (io::InterruptGuard::requested()) {
             interrupted = true;
             break;
         }
@@ -142,7 +140,7 @@ int run_simulate(const SimulateCommand& cmd) {
         written.push_back(std::to_string(saved) + " checkpoint" + (saved == 1 ? "" : "s") + " in " +
                           checkpoints.string() + "/");
     report(cmd, scene, sim, tl.h, written, interrupted);
-    return interrupted ? interrupted_exit_code(InterruptGuard::signal_number()) : kOk;
+    return interrupted ? interrupted_exit_code(io::InterruptGuard::signal_number()) : kOk;
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 #include "app/study/stability.h"
 #include "io/atomic_file.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 #include "physics/integrator.h"
 
 #include <chrono>
@@ -150,6 +151,7 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
 }
 
 int run_study(const StudyCommand& cmd) {
+    io::InterruptGuard guard; // Ctrl-C: every worker stops at its next poll; nothing is written
     const Clock::time_point start = Clock::now();
     Results r;
     r.quick = cmd.quick;
@@ -164,6 +166,8 @@ int run_study(const StudyCommand& cmd) {
     }
     try {
         measure_and_write(r, cmd, start);
+    } catch (const io::Interrupted&) {
+        throw;                          // 128 + the signal, nothing written
     } catch (const std::exception& e) { // a failed run (exit 1), named as the study's
         throw std::runtime_error(std::string("study: ") + e.what());
     }

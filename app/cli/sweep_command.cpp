@@ -3,6 +3,7 @@
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/cluster/sweep.h"
+#include "io/interrupt.h"
 
 #include <cstdio>
 #include <memory>
@@ -20,6 +21,7 @@ struct SweepCommand {
 };
 
 int run_sweep(const SweepCommand& cmd) {
+    io::InterruptGuard guard; // Ctrl-C: stops between scenes, leaving nothing
     const Sweep sweep = make_sweep(cmd.scene, cmd.sets);
     write_sweep(sweep, cmd.output);
     if (!cmd.quiet)

@@ -13,8 +13,8 @@
 #include "app/regression/junit_report.h"
 #include "app/regression/suite.h"
 #include "app/regression/suite_runner.h"
-#include "app/run/interrupt.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 #include "io/output_target.h"
 
 #include <cstdio>
@@ -58,9 +58,11 @@ int report_update(const UpdateResult& u) {
 
 int run_test(const TestCommand& cmd) {
     check_outputs(cmd);
+    // Ctrl-C: loading (auto's pilots) stops; the scenes running stop at their next frame, then
+    // nothing more is written.
+    io::InterruptGuard guard;
     const Suite suite = load_suite(cmd.suite);
     const Selection selection = select_checks(suite, cmd.filters);
-    InterruptGuard guard; // Ctrl-C: the scenes running finish, then nothing more is written
     std::printf("tumble test %s: %zu of %zu checks, %d job(s)\n", cmd.suite.c_str(),
                 selection.count, suite.check_count(), cmd.jobs);
     std::fflush(stdout);
@@ -70,7 +72,7 @@ int run_test(const TestCommand& cmd) {
                      "tumble: test interrupted after %zu of %zu checks; no report, "
                      "JUnit file or golden written\n",
                      run.results.size(), selection.count);
-        return interrupted_exit_code(InterruptGuard::signal_number());
+        return interrupted_exit_code(io::InterruptGuard::signal_number());
     }
     if (run.gl.known()) std::printf("GL: %s\n", run.gl.describe().c_str());
     print_results(run);

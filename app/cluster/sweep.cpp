@@ -5,6 +5,7 @@
 #include "app/scene/scene.h"
 #include "io/atomic_file.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 
 #include <cstdio>
 #include <fstream>
@@ -77,6 +78,7 @@ Sweep make_sweep(const std::string& scene_argument, const std::vector<std::strin
         }
     const std::size_t width = std::max<std::size_t>(3, std::to_string(combinations - 1).size());
     for (std::size_t n = 0; n < combinations; ++n) {
+        io::InterruptGuard::stop_if_requested("the sweep's checks");
         SweepScene s;
         std::size_t rest = n;
         s.values.resize(sweep.sets.size());
@@ -142,9 +144,15 @@ void write_sweep(const Sweep& sweep, const fs::path& output) {
     fs::remove_all(temp, ec);
     fs::create_directory(temp);
     try {
-        for (const SweepScene& s : sweep.scenes) write_text(temp / s.file, s.scene.dump(2) + "\n");
+        for (const SweepScene& s : sweep.scenes) {
+            io::InterruptGuard::stop_if_requested("the sweep's writing");
+            write_text(temp / s.file, s.scene.dump(2) + "\n");
+        }
         write_text(temp / "manifest.json", sweep_manifest(sweep).dump(2) + "\n");
         fs::rename(temp, dir); // replaces an empty folder, atomically
+    } catch (const io::Interrupted&) {
+        fs::remove_all(temp, ec);
+        throw;
     } catch (const std::exception& e) {
         fs::remove_all(temp, ec);
         throw std::runtime_error("cannot write the sweep into '" + output.string() +

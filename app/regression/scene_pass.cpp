@@ -2,8 +2,9 @@
 
 #include "app/run/auto_camera.h"
 #include "app/run/frame_source.h"
+#include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
-#include "app/run/simulation.h"
+#include "io/interrupt.h"
 
 #include <algorithm>
 #include <chrono>
@@ -55,13 +56,14 @@ void pass(const SuiteScene& s, Size size, const std::vector<const ImageCheck*>& 
         renderer = std::make_unique<render::Renderer>(render_options(scene.render));
         out.gl = {renderer->gl_renderer(), renderer->gl_version()};
     }
-    Simulation sim = make_simulation(scene, s.timeline.h);
+    Simulation sim = start_run(scene, s.timeline, {1, false});
     FrameSource frames(scene, s.timeline, sim, 0, last);
     frames.observe([&](std::int64_t k, const Simulation& at) {
         if (!states.empty()) sample(states, k, at, scene, out.states);
     });
     render::SceneView view;
     for (std::int64_t k = 0; frames.next(view); ++k) {
+        io::InterruptGuard::stop_if_requested("a suite's scene pass");
         for (std::size_t i : indices) {
             if (images[i]->frame != k) continue;
             const auto start = std::chrono::steady_clock::now();

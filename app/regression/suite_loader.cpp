@@ -2,6 +2,7 @@
 #include "app/regression/suite.h"
 #include "app/regression/suite_fields.h"
 
+#include "app/run/prepare_run.h"
 #include "app/run/trajectory_writer.h"
 #include "app/scene/input_file.h"
 
@@ -207,8 +208,11 @@ SuiteScene read_scene_entry(ObjectReader r, Context& c) {
     SuiteScene s;
     const FieldValue scene = r.field("scene");
     s.argument = scene.string();
-    s.scene = load_entry_scene(scene, c);
-    s.timeline = make_timeline(s.scene.world.dt, s.scene.duration, s.scene.render.fps);
+    // As every command runs it (app/run/prepare_run.h): "auto" resolved for the scene's frame
+    // rate, so the goldens record the trajectory `tumble simulate` and `tumble render` produce.
+    RunPlan plan = plan_run(load_entry_scene(scene, c));
+    s.scene = std::move(plan.scene);
+    s.timeline = plan.timeline;
     if (auto n = r.optional("name")) {
         s.name = n->string();
     } else {

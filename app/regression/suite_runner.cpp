@@ -4,9 +4,9 @@
 #include "app/regression/image_judge.h"
 #include "app/regression/scene_pass.h"
 #include "app/regression/state_compare.h"
-#include "app/run/interrupt.h"
 #include "app/run/render_frames.h"
 #include "io/bad_input.h"
+#include "io/interrupt.h"
 #include "render/renderer.h"
 
 #include <fnmatch.h>
@@ -147,7 +147,7 @@ SuiteRun run_suite(const Suite& suite, const Selection& sel, int jobs) {
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
         for (std::size_t k; (k = next++) < n;) {
-            if (InterruptGuard::requested()) return; // the scenes running finish, no more start
+            if (io::InterruptGuard::requested()) return; // the scenes running stop, no more start
             const std::size_t i = order[k];
             if (sel.images[i].empty() && sel.states[i].empty()) continue;
             const auto t0 = std::chrono::steady_clock::now();
@@ -161,7 +161,7 @@ SuiteRun run_suite(const Suite& suite, const Selection& sel, int jobs) {
     for (int t = 1; t < run.jobs; ++t) threads.emplace_back(worker);
     worker();
     for (std::thread& t : threads) t.join();
-    run.interrupted = InterruptGuard::requested();
+    run.interrupted = io::InterruptGuard::requested();
     for (auto& results : by_scene)
         for (CheckResult& r : results) run.results.push_back(std::move(r));
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

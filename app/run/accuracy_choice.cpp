@@ -3,6 +3,7 @@
 
 #include "app/run/simulation.h"
 #include "app/scene/scene_error.h"
+#include "io/interrupt.h"
 
 #include <algorithm>
 #include <chrono>
@@ -55,8 +56,14 @@ void resolve_auto_integrator(Scene& scene) {
     physics::PlanSettings settings;
     if (start.model.passes.contacts)
         settings.min_k = std::max(1, static_cast<int>(std::ceil(base / scene.world.dt - 1e-9)));
-    physics::AccuracyPlan plan =
-        physics::plan_accuracy(start.model, start.state, base, frames, tol, settings);
+    settings.stop = [] { return io::InterruptGuard::requested(); };
+    physics::AccuracyPlan plan;
+    try {
+        plan = physics::plan_accuracy(start.model, start.state, base, frames, tol, settings);
+    } catch (const physics::Stopped&) {
+        io::InterruptGuard::stop_if_requested("auto's pilot runs");
+        throw;
+    }
     scene.accuracy.pilot_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!plan.found) {

@@ -1,11 +1,15 @@
 #include "app/run/auto_camera.h"
 
-#include "app/run/simulation.h"
+#include "app/run/prepare_run.h"
+#include "app/run/progress.h"
+#include "app/run/swept_spheres.h"
+#include "io/interrupt.h"
 #include "physics/can_touch.h"
 #include "physics/model.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -25,17 +29,14 @@ glm::dvec3 up_axis(const Scene& scene) {
     return glm::normalize(glm::dvec3(scene.render.camera.base.up));
 }
 
-// A sample of the motion: a sphere that must be in frame.
-struct Sample {
-    glm::dvec3 x;
-    double radius;
-};
+using Sample = SweptSample; // a sphere that must be in frame
 
 // The camera basis: d towards the camera, r to the right, u up on screen; and the half-frame
 // tangents with the margin taken off.
 struct Basis {
     glm::dvec3 d, r, u;
     double tan_h, tan_v;
+    ViewAxes axes() const { return {r, u, d}; }
     Basis(const glm::dvec3& direction, const glm::dvec3& up, double fov_y_deg, double aspect,
           double margin)
         : d(glm::normalize(direction)), r(glm::normalize(glm::cross(up, d))), u(glm::cross(d, r)),
@@ -57,13 +58,12 @@ double fit_distance(const Basis& b, const glm::dvec3& c, const std::vector<Sampl
     return distance;
 }
 
-// Target and distance: start from the middle of the samples' extent, then move the target
+// Target and distance: start from the middle of the centres' box [lo, hi], then move the target
 // across the view until the samples' extent on screen is centred (perspective makes the near
 // side look larger), standing back each time just as far as needed. Four rounds centre it to
 // well under a percent of the frame.
-render::Camera fit(const Basis& b, const glm::dvec3& up, const std::vector<Sample>& samples) {
-    glm::dvec3 lo(kInf), hi(-kInf);
-    for (const Sample& s : samples) lo = glm::min(lo, s.x), hi = glm::max(hi, s.x);
+render::Camera fit(const Basis& b, const glm::dvec3& up, const std::vector<Sample>& samples,
+                   const glm::dvec3& lo, const glm::dvec3& hi) {
     glm::dvec3 c = 0.5 * (lo + hi);
     double distance = fit_distance(b, c, samples);
     for (int round = 0; round < 4; ++round) {
@@ -96,12 +96,12 @@ render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::
     for (int k = 0; k < 8; ++k)
         corners.push_back(
             {glm::dvec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z), 0.0});
-    render::Camera cam = fit(Basis(direction, up, fov_y_deg, aspect, margin), up, corners);
+    render::Camera cam = fit(Basis(direction, up, fov_y_deg, aspect, margin), up, corners, lo, hi);
     cam.fov_y_deg = static_cast<float>(fov_y_deg);
     return cam;
 }
 
-void frame_automatically(Scene& scene, const Timeline& tl) {
+void frame_automatically(Scene& scene, const Timeline& tl, bool quiet) {
     CameraRig& rig = scene.render.camera;
     if (rig.mode != CameraRig::Mode::Auto) return;
     const glm::dvec3 up = up_axis(scene);
@@ -111,32 +111,30 @@ void frame_automatically(Scene& scene, const Timeline& tl) {
     if (glm::length(glm::cross(glm::normalize(direction), up)) < 1e-6)
         direction += 0.5 * glm::dvec3(up.y, up.z, up.x); // looking straight along up: tilt it
     const double aspect = double(scene.render.width) / double(scene.render.height);
-    // Every body's bounding sphere at every frame while that stays small (a million samples,
-    // 32 MB); beyond, each frame's box around all of them (its corners, a looser fit).
-    Simulation sim = make_simulation(scene, tl.h);
+    const float fov = rig.base.fov_y_deg;
+    const Basis basis(direction, up, fov, aspect, rig.auto_margin);
+    // Every body's bounding sphere at every frame, in memory bounded whatever the duration
+    // (swept_spheres.h); stopped by Ctrl-C within a frame.
+    Simulation sim = start_run(scene, tl, {1, false}); // the run's own steps, no estimate
     const physics::Model& m = sim.model;
-    const bool every_body = double(tl.frames) * double(m.dynamic_bodies.size()) <= 1e6;
-    std::vector<Sample> samples;
+    SweptSpheres swept(basis.axes());
+    Progress progress("framing the camera", tl.frames, quiet);
     for (std::int64_t k = 0; k < tl.frames; ++k) {
+        io::InterruptGuard::stop_if_requested("camera.auto's pre-pass");
         if (k > 0)
             for (int s = 0; s < tl.steps_per_frame; ++s) sim.step();
-        glm::dvec3 lo(kInf), hi(-kInf);
         for (int i : m.dynamic_bodies) {
             const physics::Vec3& p = sim.state.x[i];
-            const glm::dvec3 x(p.x(), p.y(), p.z());
-            const double radius = physics::bounding_radius(m, i);
-            if (every_body) samples.push_back({x, radius});
-            lo = glm::min(lo, x - radius), hi = glm::max(hi, x + radius);
+            swept.add(glm::dvec3(p.x(), p.y(), p.z()), physics::bounding_radius(m, i));
         }
-        if (!every_body && !m.dynamic_bodies.empty())
-            for (int c = 0; c < 8; ++c)
-                samples.push_back(
-                    {glm::dvec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z),
-                     0.0});
+        progress.update(k + 1);
     }
-    if (samples.empty()) samples.push_back({glm::dvec3(rig.base.target), 0.0}); // nothing moves
-    const float fov = rig.base.fov_y_deg;
-    rig.base = fit(Basis(direction, up, fov, aspect, rig.auto_margin), up, samples);
+    progress.finish();
+    if (swept.empty()) swept.add(glm::dvec3(rig.base.target), 0.0); // nothing moves
+    rig.base = fit(basis, up, swept.samples(), swept.lo(), swept.hi());
+    if (swept.boxed() && !quiet)
+        std::fprintf(stderr, "tumble: note: camera.auto: the bodies' paths have too many extreme "
+                             "points to keep; framed the box around all of them instead\n");
     rig.base.fov_y_deg = fov;
     rig.mode = CameraRig::Mode::Fixed;
 }

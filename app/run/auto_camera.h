@@ -1,10 +1,10 @@
 #pragma once
 // camera.auto (docs/scene-format.md, render.camera): one fixed camera, chosen before the first
 // frame, that keeps every dynamic body in view for the whole run. A pre-pass steps the scene
-// over every frame time (the same steps the render will take) and collects the box that the
-// bodies' bounding spheres sweep; the camera then looks at the box's centre from the rig's
-// direction, upright along the scene's up axis (against gravity), and stands back just far
-// enough that every corner of the box lies inside the frame with the margin. One camera for the
+// over every frame time (the same steps the render will take) and collects the bodies' bounding
+// spheres (swept_spheres.h); the camera then looks at them from the rig's direction, upright
+// along the scene's up axis (against gravity), and stands back just far enough that every
+// sphere lies inside the frame with the margin. One camera for the
 // whole run: steady by construction, no jitter. A scene that gives no camera gets this one.
 #include "app/run/timeline.h"
 #include "app/scene/scene.h"
@@ -19,8 +19,10 @@ render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::
                          const glm::dvec3& up, double fov_y_deg, double aspect, double margin);
 
 // If scene.render.camera is automatic, runs the pre-pass over the timeline's frames and turns it
-// into the fixed camera frame_box() gives. Throws what stepping throws (a divergence names its
-// body and step, as the render itself would).
-void frame_automatically(Scene& scene, const Timeline& tl);
+// into the fixed camera that keeps every sphere of swept_spheres.h in frame. Memory is bounded
+// whatever the duration; a progress bar shows on a terminal unless `quiet`. Throws what stepping
+// throws (a divergence names its body and step, as the render itself would) and io::Interrupted on
+// Ctrl-C (app/run/interrupt.h).
+void frame_automatically(Scene& scene, const Timeline& tl, bool quiet = true);
 
 } // namespace tumble::app

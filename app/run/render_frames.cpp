@@ -1,8 +1,8 @@
 #include "app/run/render_frames.h"
 
 #include "app/run/frame_source.h"
-#include "app/run/interrupt.h"
 #include "app/run/progress.h"
+#include "io/interrupt.h"
 
 #include <malloc.h>
 
@@ -42,7 +42,7 @@ RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
     Progress progress("rendering", last - first + 1, quiet);
     PipelineStages stages;
     stages.produce = [&](render::SceneView& view) {
-        if (InterruptGuard::requested()) {
+        if (io::InterruptGuard::requested()) {
             out.interrupted = true;
             return false;
         }

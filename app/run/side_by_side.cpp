@@ -1,5 +1,6 @@
 #include "app/run/side_by_side.h"
 
+#include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
 #include "app/scene/scene_error.h"
 #include "physics/diagnostics.h"
@@ -40,8 +41,7 @@ SideBySide::SideBySide(const Scene& scene, const std::vector<physics::Integrator
     for (std::size_t i = 0; i < methods.size(); ++i) {
         lanes_[i].scene = scene;
         lanes_[i].scene.world.integrator = methods[i];
-        lanes_[i].sim = make_simulation(lanes_[i].scene, tl.h, threads);
-        start_error_estimate(lanes_[i].sim, lanes_[i].scene, threads);
+        lanes_[i].sim = start_run(lanes_[i].scene, tl, {threads});
     }
     // One chart scale for every tile: the same value at the same height in each, so one
     // method's drift is seen against another's flat line.

@@ -58,13 +58,14 @@ struct RenderSettings {
     int trail_axis = -1; // 0, 1, 2: also trace the tip of this body axis
 };
 
-// Accuracy as a setting (docs/accuracy.md): world.integrator "auto" picks the cheapest integrator and
-// step that meet world.tolerance (app/run/accuracy_choice.h); a tolerance with a named integrator
-// is checked, not chosen for.
+// Accuracy as a setting (docs/accuracy.md): world.integrator "auto" picks the cheapest integrator
+// and step that meet world.tolerance (app/run/accuracy_choice.h); a tolerance with a named
+// integrator is checked, not chosen for.
 struct Accuracy {
     bool auto_integrator = false;
     std::optional<physics::Tolerance> tolerance;
-    std::string tolerance_place; // where it was set ("/world/tolerance", "--tolerance"), for messages
+    std::string
+        tolerance_place; // where it was set ("/world/tolerance", "--tolerance"), for messages
     // Set once "auto" is resolved (app/run/accuracy_choice.h): the plan, and the wall time of its
     // pilot runs.
     std::optional<physics::AccuracyPlan> plan;
@@ -75,6 +76,10 @@ struct Accuracy {
 // doubling (physics/error_estimate.h) and report it at the end and at `times`.
 struct ErrorEstimateSettings {
     bool on = false;
+    // On only because a tolerance is checked (world.tolerance, --tolerance), not asked for by
+    // world.error_estimate or --error-estimate: a run that cannot carry the estimate (continued
+    // from a checkpoint) goes on without the check, and says so.
+    bool only_for_tolerance = false;
     std::vector<double> times; // s, besides the end; each reported at the nearest step
     std::string place; // where the times were given, for errors ("/world/error_estimate/times")
 };

@@ -1,6 +1,8 @@
 // `tumble study --auto`: plans checked against the exact oracles (auto_check.h).
 #include "app/study/auto_check.h"
 
+#include "io/interrupt.h"
+
 #include "app/study/metrics.h"
 #include "app/study/report.h"
 #include "app/study/runner.h"
@@ -91,8 +93,15 @@ AutoCase run_case(const Problem& p, const Reference& ref, const std::vector<Row>
     const double base = p.duration / kSamples;
     const Setup s = make_setup(p, physics::Integrator::Rk4, base);
     const auto t0 = std::chrono::steady_clock::now();
-    const physics::AccuracyPlan plan =
-        physics::plan_accuracy(s.model, s.state, base, kSamples, physics::Tolerance{tol, tol});
+    physics::PlanSettings settings;
+    settings.stop = [] { return io::InterruptGuard::requested(); };
+    physics::AccuracyPlan plan;
+    try {
+        plan = physics::plan_accuracy(s.model, s.state, base, kSamples, {tol, tol}, settings);
+    } catch (const physics::Stopped&) {
+        io::InterruptGuard::stop_if_requested("the study's pilot runs");
+        throw;
+    }
     c.pilot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     c.pilots = static_cast<int>(plan.trials.size());
     c.found = plan.found;

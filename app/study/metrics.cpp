@@ -1,7 +1,10 @@
 #include "app/study/metrics.h"
+
+#include "io/interrupt.h"
 #include "physics/exact/body_motion.h"
 #include "physics/integrator.h"
 #include "physics/step.h"
+#include "physics/stop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +78,7 @@ Reference converged_reference(const Problem& p, bool quick) {
     ref.states.push_back(s.state);
     ref.diagnostics.push_back(physics::diagnose(s.model, s.state));
     for (std::int64_t k = 1; k <= n; ++k) {
+        if (k % physics::kStopPollSteps == 0) io::InterruptGuard::stop_if_requested("the study");
         physics::step(s.model, s.state); // a diverging reference is a bug: let it throw
         if (k % per_sample == 0) {
             ref.states.push_back(s.state);

@@ -1,7 +1,9 @@
 #include "app/study/runner.h"
 #include "app/study/metrics.h"
+#include "io/interrupt.h"
 #include "physics/integrator.h"
 #include "physics/step.h"
+#include "physics/stop.h"
 
 #include <algorithm>
 #include <atomic>
@@ -23,6 +25,7 @@ void parallel_for(int count, int threads, const std::function<void(int)>& fn) {
     const auto worker = [&] {
         for (int i = next++; i < count; i = next++) {
             try {
+                io::InterruptGuard::stop_if_requested("the study");
                 fn(i);
             } catch (...) {
                 const std::lock_guard lock(error_mutex);
@@ -60,6 +63,8 @@ void accuracy_run(const Problem& p, const Reference& ref, physics::Integrator id
     const std::int64_t per_sample = row.steps / kSamples;
     try {
         for (std::int64_t k = 1; k <= row.steps; ++k) {
+            if (k % physics::kStopPollSteps == 0)
+                io::InterruptGuard::stop_if_requested("the study");
             physics::step(s.model, s.state);
             if (k % per_sample != 0) continue;
             const auto j = static_cast<std::size_t>(k / per_sample);
@@ -99,7 +104,10 @@ void timing_run(const Problem& p, physics::Integrator id, const TimingSettings& 
     std::vector<double> ns;
     for (int r = 0; r < t.repetitions; ++r) {
         double seconds = 0.0;
-        for (int b = 0; b < batch; ++b) timed_pass(s, work, row.steps, seconds);
+        for (int b = 0; b < batch; ++b) {
+            io::InterruptGuard::stop_if_requested("the study"); // between timed passes
+            timed_pass(s, work, row.steps, seconds);
+        }
         ns.push_back(1e9 * seconds / (double(batch) * double(taken) * row.bodies));
     }
     std::sort(ns.begin(), ns.end());
@@ -193,6 +201,8 @@ EnergyTrace energy_trace(const Problem& p, const std::string& integrator, double
     out.points.emplace_back(0.0, 0.0);
     try {
         for (std::int64_t k = 1; k <= n; ++k) {
+            if (k % physics::kStopPollSteps == 0)
+                io::InterruptGuard::stop_if_requested("the study");
             physics::step(s.model, s.state);
             if (k % stride != 0 && k != n) continue;
             const double e = physics::diagnose(s.model, s.state).energy();

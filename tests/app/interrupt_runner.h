@@ -18,6 +18,19 @@
 
 namespace tumble::test {
 
+// A started run that must not outlive its test: killed (SIGKILL) and reaped when the test leaves
+// the scope before the run ended, e.g. on a failed ASSERT.
+struct ChildGuard {
+    pid_t pid;
+    ~ChildGuard() {
+        int status = 0;
+        if (pid > 0 && waitpid(pid, &status, WNOHANG) == 0) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+        }
+    }
+};
+
 // Starts `tumble <args>` in `dir`, its standard error going to dir/stderr.txt.
 inline pid_t start_tumble(const std::filesystem::path& dir, const std::string& args) {
     const pid_t pid = fork();
@@ -31,7 +44,25 @@ inline pid_t start_tumble(const std::filesystem::path& dir, const std::string& a
     return pid;
 }
 
-// Waits (60 s at most) until a file in `dir` whose name starts with `prefix` holds more than a
+// Waits (60 s at most) until process `pid` handles `signal` itself (its SigCgt mask in
+// /proc/PID/status has the bit): from then on a signal reaches Tumble's handler, not the default
+// action. Returns false if that never happened.
+inline bool wait_until_handling(pid_t pid, int signal) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    const std::string status = "/proc/" + std::to_string(pid) + "/status";
+    for (;;) {
+        const std::string text = read_text(status);
+        const auto at = text.find("SigCgt:");
+        if (at != std::string::npos &&
+            (std::stoull(text.substr(at + 7, 24), nullptr, 16) >> (signal - 1) & 1))
+            return true;
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+}
+
+// Waits (240 s at most: a busy machine is slow to start) until a file in `dir` whose name starts
+// with `prefix` holds more than a
 // header (an MP4's first 48 bytes are flushed when it is opened, a CSV's header row sits in
 // stdio's buffer): the run is writing results. Returns false if that never happened.
 // Waits (60 s at most) until `file` holds `text`. Returns false if that never happened.
@@ -46,7 +77,7 @@ inline bool wait_until_said(const std::filesystem::path& file, const std::string
 
 inline bool wait_until_writing(const std::filesystem::path& dir, const std::string& prefix) {
     constexpr std::uintmax_t kMoreThanAHeader = 1024;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(240);
     auto writing = [&] {
         std::error_code ec;
         for (const auto& e : std::filesystem::directory_iterator(dir, ec))
@@ -84,6 +115,7 @@ inline int wait_for_exit(pid_t pid, std::chrono::seconds limit = std::chrono::se
 inline int interrupt_when_writing(const std::filesystem::path& dir, const std::string& args,
                                   const std::string& partial_prefix, int signal) {
     const pid_t pid = start_tumble(dir, args);
+    const ChildGuard child{pid};
     EXPECT_TRUE(wait_until_writing(dir, partial_prefix)) << "never started writing";
     kill(pid, signal);
     return wait_for_exit(pid);

@@ -45,6 +45,7 @@ TEST(Interrupts, SigtermFinishesAVideoThatPlays) {
 TEST(Interrupts, ASecondCtrlCQuitsAtOnceAndDeletesTheOutputInProgress) {
     const auto dir = scratch_dir();
     const pid_t pid = start_tumble(dir, "render --duration 600 -o twice.mp4");
+    const ChildGuard child{pid};
     ASSERT_TRUE(wait_until_writing(dir, ".twice.mp4"));
     kill(pid, SIGINT);
     EXPECT_TRUE(wait_until_said(dir / "stderr.txt", "again to quit at once"));
@@ -59,6 +60,7 @@ TEST(Interrupts, ASecondCtrlCQuitsAtOnceAndDeletesTheOutputInProgress) {
 TEST(Interrupts, TheNextRunRemovesWhatAKilledRunLeftBehind) {
     const auto dir = scratch_dir();
     const pid_t pid = start_tumble(dir, "render --duration 600 --width 160 --height 90 -o k.mp4");
+    const ChildGuard child{pid};
     ASSERT_TRUE(wait_until_writing(dir, ".k.mp4"));
     kill(pid, SIGKILL); // no handler runs: the temporary file stays
     EXPECT_EQ(wait_for_exit(pid), 128 + SIGKILL);

@@ -187,6 +187,7 @@ TEST(RegressionSuite, CtrlCStopsTheRunAndWritesNothing) {
         {"scene": "tossed_book", "states": [{"frames": [0], "quantities": {"energy": 0}}]}]})");
     const pid_t pid =
         start_tumble(dir, "test suite.json --update --junit j.xml --report rep > out.txt");
+    const ChildGuard child{pid};
     ASSERT_TRUE(wait_until_said(dir / "out.txt", "3 of 3 checks, 1 job(s)"));
     kill(pid, SIGINT);
     EXPECT_EQ(wait_for_exit(pid), 130);
