@@ -1,6 +1,6 @@
 #include "render/draw_list.h"
 
-#include "render/renderer.h" // RenderError
+#include "render/render_error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,27 +1,13 @@
 #pragma once
-// Where rendered frames go. The output name chooses the sink:
-//   *.mp4                      H.264 (libx264, yuv420p, BT.709 limited range) in MP4
-//   *.webm                     VP9 (libvpx) in WebM (video_sink.h)
-//   *.gif                      animated GIF, one palette per video (gif_sink.h)
-//   a directory (existing, or a name ending in '/')   PNG sequence dir/000000.png, 000001.png ...
-//   a name with a printf integer pattern, e.g. frames/%06d.png or shot_%04d.png   PNG sequence
-//   *.png (no pattern)         a single still: exactly one frame
-//   null                       nothing: frames are checked and discarded (timing baselines; a
-//                              directory called null is written as "null/")
-// Every file is written under a temporary name in the same directory and renamed only when it is
-// complete, so an interrupted or failed run never leaves a half-written file behind. A missing
-// output directory is created, with its parents. A PNG sequence refuses a folder that already
-// holds frames of its pattern (a later `ffmpeg -i %06d.png` would mix the stale ones in) unless
-// `overwrite`, which first removes exactly those frame files.
-//
-// Typical use (the app's render loop; Ctrl-C sets a flag, the loop stops and calls finish()):
-//   auto sink = open_sink("out/default.mp4", {.width = 1280, .height = 720, .fps = 60});
-//   for (...) { renderer.draw(view, image); sink->write(image); }
-//   sink->finish();            // on an exception instead, the destructor deletes the partial file
+// Where rendered frames go: the sink interface every output implements (a video, a GIF, PNG
+// frames, a still, nothing), its options, and what they share. open_sink.h picks one from an
+// output name. Every file is written under a temporary name in the same directory and renamed
+// only when it is complete, so an interrupted or failed run never leaves a half-written file.
 #include "render/image.h"
 #include "render/png_io.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -87,19 +73,20 @@ class FrameSink {
     virtual std::int64_t frames_written() const = 0;
 };
 
-// Chooses and opens the sink for `output`. Throws SinkError naming the output and the problem
-// (odd dimensions for H.264, unwritable directory, unknown extension ...).
-std::unique_ptr<FrameSink> open_sink(const std::string& output, const SinkOptions& options);
-
-// libavcodec and libx264 log to stderr at "info" level by default (CPU flags, statistics at the
-// end of every encode). This lowers FFmpeg's process-wide log level to warnings and errors. The
-// setting is global to the process, so only main() should call it, once, before encoding.
-void quiet_video_logs();
-
 namespace detail {
 // Throws SinkError naming `output` unless `image` is non-empty, its pixel buffer matches its size,
 // and it is `width` x `height` (when those are > 0).
 void check_frame(const std::string& output, const Image& image, int width, int height);
+
+// What every sink's write() checks first: the output is not finished (or aborted) yet.
+void check_open(const FrameSink& sink, bool done);
+
+// The one way a sink finishes: refuses a second finish() and an output without frames, runs
+// `complete` (the encoder's last frames, the trailer, the rename into place) and, if anything
+// fails, deletes the partial output with sink.abort() before rethrowing (an io::FileError as a
+// SinkError). Sets `done` once the output is complete.
+void finish_sink(FrameSink& sink, bool& done, std::int64_t frames,
+                 const std::function<void()>& complete);
 } // namespace detail
 
 } // namespace tumble::render

@@ -1,6 +1,6 @@
 #include "render/framebuffer.h"
 
-#include "render/renderer.h" // RenderError
+#include "render/render_error.h"
 
 #include <GL/glext.h>
 

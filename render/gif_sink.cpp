@@ -110,7 +110,7 @@ GifSink::~GifSink() {
 }
 
 void GifSink::write(const Image& image) {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_open(*this, done_);
     if (image.width != options_.width || image.height != options_.height)
         throw SinkError("'" + describe() + "': frame of " + std::to_string(image.width) + "x" +
                         std::to_string(image.height) + ", expected " +
@@ -122,24 +122,15 @@ void GifSink::write(const Image& image) {
 }
 
 void GifSink::finish() {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
-    if (frames_ == 0) {
-        abort();
-        throw SinkError("'" + describe() + "': no frame was rendered, nothing to save");
-    }
-    try {
-        if (std::fclose(spool_) != 0)
-            throw SinkError("cannot write '" + spool_path_.string() + "'");
+    detail::finish_sink(*this, done_, frames_, [&] {
+        const int closed = std::fclose(spool_);
         spool_ = nullptr;
+        if (closed != 0) throw SinkError("cannot write '" + spool_path_.string() + "'");
         encode();
         file_.commit();
-    } catch (...) {
-        abort();
-        throw;
-    }
-    std::error_code ec;
-    fs::remove(spool_path_, ec);
-    done_ = true;
+        std::error_code ec;
+        fs::remove(spool_path_, ec);
+    });
 }
 
 void GifSink::abort() noexcept {

@@ -1,6 +1,6 @@
 #include "render/gl_context.h"
 
-#include "render/renderer.h" // RenderError
+#include "render/render_error.h"
 
 #include <GL/gl.h>
 #include <GL/osmesa.h>

@@ -147,7 +147,7 @@ PngSequenceSink::PngSequenceSink(FramePattern pattern, const SinkOptions& option
 }
 
 void PngSequenceSink::write(const Image& image) {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_open(*this, done_);
     detail::check_frame(describe(), image, options_.width, options_.height);
     options_.width = image.width; // later frames must have the size of the first
     options_.height = image.height;
@@ -160,12 +160,7 @@ void PngSequenceSink::write(const Image& image) {
 }
 
 void PngSequenceSink::finish() {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
-    if (frames_ == 0) {
-        abort();
-        throw SinkError("no frames were written to '" + describe() + "'");
-    }
-    done_ = true; // every frame is already complete on disk
+    detail::finish_sink(*this, done_, frames_, [] {}); // every frame is complete on disk
 }
 
 void PngSequenceSink::abort() noexcept {
@@ -189,7 +184,7 @@ PngStillSink::PngStillSink(const fs::path& path, const SinkOptions& options)
 }
 
 void PngStillSink::write(const Image& image) {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_open(*this, done_);
     if (frames_ > 0) {
         throw SinkError("'" + describe() +
                         "' is a single still and already has its frame; for a sequence use a "
@@ -206,18 +201,7 @@ void PngStillSink::write(const Image& image) {
 }
 
 void PngStillSink::finish() {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
-    try {
-        if (frames_ == 0) throw SinkError("no frame was written to '" + describe() + "'");
-        file_.commit();
-    } catch (const io::FileError& e) {
-        abort();
-        throw SinkError(e.what());
-    } catch (...) {
-        abort();
-        throw;
-    }
-    done_ = true;
+    detail::finish_sink(*this, done_, frames_, [&] { file_.commit(); });
 }
 
 void PngStillSink::abort() noexcept {

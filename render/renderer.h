@@ -2,6 +2,7 @@
 // Headless renderer: an OSMesa (llvmpipe) OpenGL 3.3+ core context that draws a SceneView into
 // an Image. No window, no display, no global state: everything lives in the Renderer object.
 #include "render/image.h"
+#include "render/render_error.h"
 #include "render/scene_view.h"
 
 #include <cstdint>
@@ -10,10 +11,6 @@
 #include <string>
 
 namespace tumble::render {
-
-struct RenderError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 struct RenderOptions {
     int width = 1280;

@@ -1,6 +1,6 @@
 #include "render/shadow_map.h"
 
-#include "render/renderer.h" // RenderError
+#include "render/render_error.h"
 
 #include <GL/glext.h>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,7 +1,7 @@
 #include "render/text_overlay.h"
 
 #include "render/assets.h"
-#include "render/renderer.h" // RenderError
+#include "render/render_error.h"
 
 #include <GL/glext.h>
 #include <stb_truetype.h>

@@ -4,6 +4,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -271,7 +272,7 @@ VideoSink::~VideoSink() {
 }
 
 void VideoSink::write(const Image& image) {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
+    detail::check_open(*this, done_);
     detail::check_frame(describe(), image, options_.width, options_.height);
     AVFrame* frame = encoder_->frame.get();
     // The encoder may still hold the previous picture (lookahead): get a buffer of our own.
@@ -290,22 +291,17 @@ void VideoSink::write(const Image& image) {
 }
 
 void VideoSink::finish() {
-    if (done_) throw SinkError("'" + describe() + "' is already finished");
-    try {
-        if (frames_ == 0) throw SinkError("no frames were written to '" + describe() + "'");
+    detail::finish_sink(*this, done_, frames_, [&] {
         encoder_->encode(nullptr); // flush the frames x264 still holds (lookahead, B-frames)
         encoder_->check(av_write_trailer(encoder_->format.get()), "finishing the file");
         encoder_->check(avio_closep(&encoder_->format->pb), "closing the file");
         encoder_.reset();
         file_.commit();
-    } catch (const io::FileError& e) {
-        abort();
-        throw SinkError(e.what());
-    } catch (...) {
-        abort();
-        throw;
-    }
-    done_ = true;
+    });
+}
+
+void quiet_video_logs() {
+    av_log_set_level(AV_LOG_WARNING);
 }
 
 void VideoSink::abort() noexcept {

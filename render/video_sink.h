@@ -64,4 +64,9 @@ class VideoSink final : public FrameSink {
     bool done_ = false; // finished or aborted
 };
 
+// libavcodec and libx264 log to stderr at "info" level by default (CPU flags, statistics at the
+// end of every encode). This lowers FFmpeg's process-wide log level to warnings and errors. The
+// setting is global to the process, so only main() should call it, once, before encoding.
+void quiet_video_logs();
+
 } // namespace tumble::render

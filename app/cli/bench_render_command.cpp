@@ -11,6 +11,7 @@
 #include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
 #include "io/bad_input.h"
+#include "render/open_sink.h"
 
 #include <cstdlib>
 #include <unistd.h>

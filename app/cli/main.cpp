@@ -5,7 +5,7 @@
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/cli/usage_error.h"
-#include "render/frame_sink.h"
+#include "render/video_sink.h"
 
 #include <vector>
 

@@ -5,6 +5,7 @@
 #include "app/cluster/frame_range.h"
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
+#include "render/open_sink.h"
 
 #include <algorithm>
 #include <cmath>

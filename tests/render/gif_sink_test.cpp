@@ -2,8 +2,8 @@
 // with libavformat/libavcodec: every frame is there, at its size, and close to what was written
 // (256 colours with error diffusion); above 50 fps every n-th frame is kept so that browsers play
 // it at its speed; an empty or aborted GIF leaves nothing behind.
-#include "render/frame_sink.h"
 #include "render/gif_sink.h"
+#include "render/open_sink.h"
 
 #include "test_support.h"
 

@@ -1,6 +1,6 @@
 // PNG sinks (file names, contents, what they leave on disk) and open_sink's choice of sink and
 // its error messages.
-#include "render/frame_sink.h"
+#include "render/open_sink.h"
 #include "render/png_io.h"
 #include "render/png_sink.h"
 

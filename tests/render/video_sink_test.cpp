@@ -1,6 +1,7 @@
 // The video sinks (MP4 and WebM), checked by decoding its files with libavformat/libavcodec (what a
 // player sees) and by what it leaves on disk after finish(), abort() and errors.
-#include "render/frame_sink.h"
+#include "render/open_sink.h"
+#include "render/video_sink.h"
 
 #include "test_support.h"
 
