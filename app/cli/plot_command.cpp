@@ -4,11 +4,11 @@
 // and data beside it. The quantities and where each comes from: app/plot/quantity.h.
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
+#include "app/gnuplot/gnuplot.h"
 #include "app/plot/figure.h"
 #include "app/plot/series.h"
 #include "app/scene/scene.h"
 #include "app/scene/scene_check.h"
-#include "app/study/gnuplot.h"
 #include "io/bad_input.h"
 
 #include <cstdio>
@@ -68,7 +68,7 @@ std::vector<std::string> labels_of(const PlotCommand& cmd,
 }
 
 int run_plot(const PlotCommand& cmd) {
-    if (!study::is_figure_name(cmd.output))
+    if (!gnuplot::is_figure_name(cmd.output))
         throw io::BadInput("-o " + cmd.output + ": expected a figure name ending in .png or .svg");
     plot::PlotRequest req;
     req.quantities = find_quantities(cmd.quantities);
@@ -81,8 +81,8 @@ int run_plot(const PlotCommand& cmd) {
         req.scene_source = cmd.scene;
         for (const BodyLook& look : scene.looks) req.scene_bodies.push_back(look.name);
     }
-    plot::check_request(req); // options first: a mistake costs no reading
-    study::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
+    plot::check_request(req);   // options first: a mistake costs no reading
+    gnuplot::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
     const std::vector<plot::RunFiles> files = plot::distinct_runs(cmd.runs);
     const std::vector<std::string> labels = labels_of(cmd, files);
     std::vector<plot::Run> runs;

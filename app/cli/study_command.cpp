@@ -109,7 +109,7 @@ void run_grid_with_progress(Results& r, const StudyCommand& cmd) {
 
 // Everything after the set-up: measure, analyse, write. Throws on any failure.
 void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point start) {
-    r.plotter = gnuplot_version(); // before the long part: a missing gnuplot fails at once
+    r.plotter = gnuplot::gnuplot_version(); // before the long part: a missing gnuplot fails at once
     r.machine = describe_machine();
     r.build = describe_build();
     run_grid_with_progress(r, cmd);

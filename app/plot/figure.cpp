@@ -1,13 +1,13 @@
 #include "app/plot/figure.h"
 
-#include "app/study/gnuplot.h"
+#include "app/gnuplot/gnuplot.h"
 
 #include <cstdio>
 
 namespace tumble::app::plot {
 namespace {
 
-using study::gnuplot_quote;
+using gnuplot::gnuplot_quote;
 
 std::string number(double v) {
     char buf[40];
@@ -44,14 +44,14 @@ std::filesystem::path data_path(const std::filesystem::path& figure) {
 
 void draw_figure(const std::filesystem::path& figure, const std::vector<Series>& series,
                  const FigureLabels& labels, int width, int height) {
-    study::GnuplotFigure f;
+    gnuplot::GnuplotFigure f;
     f.figure = figure;
     f.made_by = "tumble plot";
     f.width = width;
     f.height = height;
     f.body = plot_commands(series, labels);
     f.data.push_back({"data", data_path(figure), data_text(series)});
-    study::draw_with_gnuplot(f);
+    gnuplot::draw_with_gnuplot(f);
 }
 
 } // namespace tumble::app::plot

@@ -13,9 +13,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Draws dir/plots/<name>.png from `body`, its script kept beside it (app/study/gnuplot.h).
+// Draws dir/plots/<name>.png from `body`, its script kept beside it (app/gnuplot/gnuplot.h).
 void draw(const fs::path& dir, const std::string& name, const std::string& body) {
-    draw_with_gnuplot({dir / "plots" / (name + ".png"), "tumble study", 900, 560, body, {}});
+    gnuplot::draw_with_gnuplot(
+        {dir / "plots" / (name + ".png"), "tumble study", 900, 560, body, {}});
 }
 
 std::string num(double v) {

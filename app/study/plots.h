@@ -1,8 +1,8 @@
 #pragma once
-// The study's PNG plots, drawn by gnuplot (app/study/gnuplot.h) on generated scripts with the
+// The study's PNG plots, drawn by gnuplot (app/gnuplot/gnuplot.h) on generated scripts with the
 // data inline. Each plot keeps its script beside the PNG (plots/<name>.gp), so a user can restyle
 // and redraw it with `gnuplot <name>.gp`.
-#include "app/study/gnuplot.h"
+#include "app/gnuplot/gnuplot.h"
 #include "app/study/report.h"
 
 #include <filesystem>
@@ -24,7 +24,8 @@ inline const char* contact_stability_plot() {
     return "plots/contact-stability.png";
 }
 
-// Draws every plot into dir/plots/. Throws PlotError when gnuplot fails (its message included).
+// Draws every plot into dir/plots/. Throws gnuplot::PlotError when gnuplot fails (its message
+// included).
 void write_plots(const std::filesystem::path& dir, const Results& r);
 
 // Errors below this are drawn at it (log axes cannot show 0).

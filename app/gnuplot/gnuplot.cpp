@@ -2,7 +2,7 @@
 // text are what a plotting program already does well, and the renderer has no text or 2D layer
 // (issue 6 allows either). gnuplot-nox is a small, long-maintained Debian package without X; its
 // pngcairo terminal draws anti-aliased PNGs with the DejaVu fonts, its svg terminal vector figures.
-#include "app/study/gnuplot.h"
+#include "app/gnuplot/gnuplot.h"
 
 #include "io/atomic_file.h"
 
@@ -13,7 +13,7 @@
 #include <memory>
 #include <sys/wait.h>
 
-namespace tumble::app::study {
+namespace tumble::app::gnuplot {
 namespace {
 
 namespace fs = std::filesystem;
@@ -113,4 +113,4 @@ void draw_with_gnuplot(const GnuplotFigure& f) {
     figure.commit(); // last: a figure on disk always has its script and data beside it
 }
 
-} // namespace tumble::app::study
+} // namespace tumble::app::gnuplot

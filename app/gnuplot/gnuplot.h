@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::app::study {
+namespace tumble::app::gnuplot {
 
 struct PlotError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -47,4 +47,4 @@ bool is_figure_name(const std::filesystem::path& figure);
 // when gnuplot fails; io errors as io::AtomicFile throws them.
 void draw_with_gnuplot(const GnuplotFigure& figure);
 
-} // namespace tumble::app::study
+} // namespace tumble::app::gnuplot
