@@ -1,4 +1,4 @@
-#include "app/scene/camera_rig.h"
+#include "app/scene/camera_rig_reader.h"
 
 #include "app/scene/body_reference.h"
 #include "app/scene/scene_fields.h"

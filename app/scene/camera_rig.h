@@ -11,7 +11,6 @@
 //           a pre-pass (app/run/auto_camera.h); also what a scene without a camera gets
 // A camera is a pure function of time and the followed body's position: frame k's camera needs
 // no history, so a still of frame k is the same as frame k of a video.
-#include "app/scene/json_reader.h"
 #include "render/scene_view.h"
 
 #include <string>
@@ -55,9 +54,6 @@ struct CameraRig {
 
     bool needs_body() const { return mode == Mode::Follow; }
 };
-
-// Reads render.camera into `rig` (whose base holds the defaults). Throws SceneError.
-void read_camera_rig(JsonReader r, CameraRig& rig);
 
 // Resolves rig.follow_name against the bodies' names (or an index); throws SceneError naming
 // `file` and the JSON path of the name when no body matches.

@@ -1,6 +1,7 @@
 // Scene file -> Scene. The format is documented in docs/scene-format.md; keep the two in step.
 #include "app/scene/assets.h"
 #include "app/scene/body_loader.h"
+#include "app/scene/camera_rig_reader.h"
 #include "app/scene/scene.h"
 
 #include "app/scene/input_file.h"

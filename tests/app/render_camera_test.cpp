@@ -1,5 +1,6 @@
 // Cameras from the scene file: each mode is the function of time (and of the followed body) that
 // docs/scene-format.md describes, and bad camera sections fail at their JSON path.
+#include "app/scene/camera_rig_reader.h"
 #include "app/scene/scene.h"
 #include "app/scene/scene_error.h"
 #include "app/view/camera.h"
