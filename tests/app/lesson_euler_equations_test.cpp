@@ -78,6 +78,51 @@ TEST(Lessons, TheWobblingPlateTurnsAsEulersEquationsSay) {
     expect_quoted(kLesson, "w_turns_in_body", r.body);
     expect_quoted(kLesson, "axis_turns_in_room", r.room);
     expect_quoted(kLesson, "wobble_over_spin", r.room / r.body);
+    expect_quoted(kLesson, "wobble_over_w3", r.room / wb.z());
+    // The cones' angles: axis to L, tan = I1 w1 / (I3 w3); axis to w, tan = w1 / w3.
+    expect_quoted(kLesson, "axis_to_L", 180 / M_PI * std::atan2(i1 * wb.x(), i3 * wb.z()));
+    expect_quoted(kLesson, "axis_to_w", 180 / M_PI * std::atan2(wb.x(), wb.z()));
+}
+
+// Exercise 1: the same throw of a plate of (almost) no thickness: I3 = 2 I1, so Omega_b = w3 and
+// |L| / I1 = sqrt(w1^2 + 4 w3^2); the scene's run with the plate 0.1 mm thick says the same.
+TEST(Lessons, AThinPlateWobblesAtTheLimitingRates) {
+    app::Scene scene = lesson_scene("wobbling_plate");
+    physics::BodyDef& plate = scene.bodies[1];
+    plate.shape.half_extents.z() = 0.5e-4;
+    const physics::Vec3 size = 2.0 * plate.shape.half_extents;
+    const double m = plate.mass;
+    const physics::Vec3 inertia(m * (size.y() * size.y() + size.z() * size.z()) / 12,
+                                m * (size.x() * size.x() + size.z() * size.z()) / 12,
+                                m * (size.x() * size.x() + size.y() * size.y()) / 12);
+    const physics::Vec3 wb = plate.orientation.conjugate() * plate.angular_velocity;
+    const double thin_body = wb.z(), thin_room = std::hypot(wb.x(), 2 * wb.z());
+    const Rates r = measure(scene, inertia);
+    EXPECT_NEAR(r.body / thin_body, 1.0, 1e-6); // 0.1 mm is thin to 1e-7
+    EXPECT_NEAR(r.room / thin_room, 1.0, 1e-6);
+    expect_quoted(kLesson, "thin_w_turns_in_body", thin_body);
+    expect_quoted(kLesson, "thin_axis_turns_in_room", thin_room);
+}
+
+// Exercise 3: an engine without w x I w keeps w fixed in the world, R(t) = exp(t [w]x) R0, so
+// L = R I_body R^T w turns about w at |w| with the plate: after one turn, 2 pi / |w|, it is back.
+TEST(Lessons, WithoutTheTransportTermLTurnsWithThePlate) {
+    const app::Scene scene = lesson_scene("wobbling_plate");
+    const physics::BodyDef& plate = scene.bodies[1];
+    const physics::Vec3 size = 2.0 * plate.shape.half_extents, w = plate.angular_velocity;
+    const double m = plate.mass;
+    const physics::Vec3 inertia(m * (size.y() * size.y() + size.z() * size.z()) / 12,
+                                m * (size.x() * size.x() + size.z() * size.z()) / 12,
+                                m * (size.x() * size.x() + size.y() * size.y()) / 12);
+    const auto l_at = [&](double t) {
+        const physics::Quat q =
+            physics::Quat(Eigen::AngleAxisd(t * w.norm(), w.normalized())) * plate.orientation;
+        return physics::Vec3(q * inertia.cwiseProduct(q.conjugate() * w));
+    };
+    const double period = 2 * M_PI / w.norm();
+    EXPECT_LT((l_at(period) - l_at(0)).norm(), 1e-12 * l_at(0).norm());
+    EXPECT_GT((l_at(period / 2) - l_at(0)).norm(), 0.1 * l_at(0).norm()); // it does move
+    expect_quoted(kLesson, "no_transport_L_period", period);
 }
 
 } // namespace
