@@ -151,4 +151,30 @@ inline double unwrap(double unwrapped, double& last, double a) {
     return unwrapped;
 }
 
+// The two turns of a torque-free symmetric body, fitted over a run: (w1, w2) about the body's axis
+// as seen from the body, and the axis about the fixed L as seen from the room (lessons 1 and 8).
+class TurnRates {
+  public:
+    explicit TurnRates(const physics::Vec3& l)
+        : u_(l.normalized().unitOrthogonal()), v_(l.normalized().cross(u_)) {}
+    // At time t: w in the body's axes, and the body's axis in the world.
+    void add(double t, const physics::Vec3& w_body, const physics::Vec3& axis) {
+        const double b = std::atan2(w_body.y(), w_body.x()),
+                     r = std::atan2(axis.dot(v_), axis.dot(u_));
+        if (t_.empty()) last_body_ = b, last_room_ = r;
+        body_ = unwrap(body_, last_body_, b);
+        room_ = unwrap(room_, last_room_, r);
+        t_.push_back(t);
+        body_angle_.push_back(body_);
+        room_angle_.push_back(room_);
+    }
+    double body() const { return slope(t_, body_angle_); }
+    double room() const { return slope(t_, room_angle_); }
+
+  private:
+    physics::Vec3 u_, v_;
+    std::vector<double> t_, body_angle_, room_angle_;
+    double body_ = 0, room_ = 0, last_body_ = 0, last_room_ = 0;
+};
+
 } // namespace tumble::test

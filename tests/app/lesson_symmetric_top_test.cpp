@@ -46,13 +46,11 @@ Measured measure(const app::Scene& scene, int b) {
     };
     physics::Quat q = physics::body_pose(sim.model, sim.state, b).orientation;
     const physics::Vec3 l0 = angular_momentum(q, sim.state.w[b]);
-    const physics::Vec3 n = l0.normalized(), u = n.unitOrthogonal(), v = n.cross(u);
     const auto angle = [](const physics::Vec3& x, const physics::Vec3& y) {
         return angle_between(x, y);
     };
     Measured m;
-    std::vector<double> t, body, room;
-    double body_unwrapped = 0, room_unwrapped = 0, last_body = 0, last_room = 0;
+    TurnRates rates(l0);
     const auto steps = static_cast<int>(std::lround(scene.duration / sim.model.dt));
     for (int k = 0; k <= steps; ++k) {
         if (k > 0) sim.step();
@@ -66,16 +64,10 @@ Measured measure(const app::Scene& scene, int b) {
                                          std::abs(tl - m.theta_l), std::abs(sp - m.space)});
         m.worst_coplanar =
             std::max(m.worst_coplanar, std::abs(a.dot(w.cross(l))) / (w.norm() * l.norm()));
-        const double bb = std::atan2(wb.y(), wb.x()), rr = std::atan2(a.dot(v), a.dot(u));
-        if (k == 0) last_body = bb, last_room = rr;
-        body_unwrapped = unwrap(body_unwrapped, last_body, bb);
-        room_unwrapped = unwrap(room_unwrapped, last_room, rr);
-        t.push_back(k * sim.model.dt);
-        body.push_back(body_unwrapped);
-        room.push_back(room_unwrapped);
+        rates.add(k * sim.model.dt, wb, a);
     }
-    m.body_rate = slope(t, body);
-    m.room_rate = slope(t, room);
+    m.body_rate = rates.body();
+    m.room_rate = rates.room();
     return m;
 }
 
