@@ -131,7 +131,23 @@ Passes decide_passes(const Model& m) {
         p.gyroscopic |= !m.isotropic[i];
     }
     p.contacts = m.touch.can_touch; // can_touch.h
+    p.dampers = !m.dampers.empty();
     return p;
+}
+
+// Each damper couples two different bodies of the scene, at least one of them dynamic, with a
+// finite coefficient >= 0.
+void add_dampers(Model& m, const std::vector<Damper>& dampers) {
+    for (const Damper& d : dampers) {
+        const int n = m.body_count();
+        require(d.a >= 0 && d.a < n && d.b >= 0 && d.b < n && d.a != d.b, -1, "dampers",
+                "a damper couples two different bodies of the scene");
+        require(m.is_dynamic(d.a) || m.is_dynamic(d.b), d.a, "dampers",
+                "a damper between two static bodies does nothing: one of them must move");
+        require(std::isfinite(d.c) && d.c >= 0.0, d.a, "dampers",
+                "a damper's coefficient must be finite and >= 0 (N m s)");
+        m.dampers.push_back(d);
+    }
 }
 
 // `exact` follows the torque-free motion (IntegratorInfo::refuses_torque): a body with an applied
@@ -140,6 +156,13 @@ Passes decide_passes(const Model& m) {
 void check_integrator_fits(const Model& m) {
     const IntegratorInfo& info = integrator_info(m.integrator);
     if (!info.refuses_torque) return;
+    // A damper is a torque between two bodies (damper.h).
+    if (!m.dampers.empty())
+        require(false, m.dampers.front().a, "dampers",
+                "the scene has a damper, a torque between two bodies, but the `" +
+                    std::string(info.name) +
+                    "` integrator steps torque-free bodies only; use `splitting_exact` or "
+                    "another integrator");
     for (int i : m.dynamic_bodies)
         require(m.applied_torque[i] == Vec3::Zero(), i, "torque",
                 "body " + std::to_string(i) + " has an applied torque " +
@@ -160,6 +183,7 @@ Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies) {
     m.contact = world.contact;
     validate_contact_settings(m.contact);
     for (int i = 0; i < static_cast<int>(bodies.size()); ++i) add_body(m, bodies[i], i);
+    add_dampers(m, world.dampers);
     m.touch = find_touching_pair(m, bodies);
     m.passes = decide_passes(m);
     check_integrator_fits(m);

@@ -16,7 +16,8 @@ struct WorldDef {
     Vec3 gravity = Vec3(0.0, 0.0, -9.81);
     double dt = 1.0 / 240.0;
     Integrator integrator = Integrator::Rk4;
-    ContactSettings contact; // sleeping, substeps, restitution threshold (contact_model.h)
+    ContactSettings contact;     // sleeping, substeps, restitution threshold (contact_model.h)
+    std::vector<Damper> dampers; // viscous rotary dampers between bodies (damper.h)
 };
 
 struct BodyDef {

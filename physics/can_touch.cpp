@@ -26,6 +26,9 @@ struct Flight {
 double spin_bound(const Model& m, const BodyDef& b, int i) {
     if (!m.is_dynamic(i) || m.swing[i] == 0.0) return 0.0;
     if (b.applied_torque != Vec3::Zero()) return kInf; // |w| grows without bound
+    // A damper moves angular momentum between its bodies (damper.h): |L| of one is not conserved.
+    for (const Damper& d : m.dampers)
+        if (d.a == i || d.b == i) return kInf;
     // Torque-free: |L| = |I_body w_body| is conserved and |w| = |I^-1 L| <= |L| / I_min.
     const Quat q = b.orientation.normalized() * m.body_from_mass[i];
     const Vec3 l = m.inertia[i].cwiseProduct(q.conjugate() * b.angular_velocity);
@@ -67,7 +70,8 @@ double closest_gap(const Model& m, const Flight& p, const Flight& q, int i, int 
     const double margin =
         2.0 * m.contact.speculative_distance + m.dt * (u.norm() + p.spin + q.spin);
     if (!std::isfinite(margin)) {
-        r.why = format("bodies %d and %d: a non-round body spun up by an applied torque", i, j);
+        r.why = format(
+            "bodies %d and %d: a non-round body spun up by an applied torque or a damper", i, j);
         return -kInf;
     }
     if (p.plane || q.plane) {

@@ -6,6 +6,13 @@
 //   x' = x + h v'
 //   q' = exp(h w') (x) q
 //
+// The name is the one Box2D, Jolt and Catto's talks use for this scheme, and it holds for the
+// translation: for a separable H = T(p) + V(q) (a particle in a potential) the kick-then-drift map
+// is symplectic, and its energy error stays bounded over exponentially long times. Rotation is not
+// separable (T = 1/2 L . I_w^-1 L depends on the orientation) and the gyroscopic term is taken
+// explicitly, so for a tumbling body the map is not symplectic and the energy drifts (below):
+// docs/lessons/02-explicit-euler.md says so, and why the name stays.
+//
 // Order: 1, translation included (under a constant force x' runs h^2 a / 2 ahead per step).
 // Conserves: an isotropic torque-free body exactly (w' = w, and q' is the exact rotation). For
 // anything that tumbles, nothing. Without torque the rotation exp(h w') leaves w' fixed, so in the

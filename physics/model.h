@@ -31,6 +31,14 @@ struct Passes {
     bool applied_loads = false; // some dynamic body has a constant applied force or torque
     bool gyroscopic = false;    // some dynamic body has anisotropic inertia (w x I w != 0)
     bool contacts = false;      // two shapes can touch (can_touch.h; Model::touch says which)
+    bool dampers = false;       // some pair of bodies is coupled by a damper (damper.h)
+};
+
+// A viscous rotary damper between bodies a and b (damper.h): torque c (w_b - w_a) on a and the
+// opposite on b. At most one of the two is static.
+struct Damper {
+    int a = 0, b = 0;
+    double c = 0.0; // N m s
 };
 
 struct Model {
@@ -61,6 +69,8 @@ struct Model {
                                     // (0 for a sphere, half length for a capsule, ...)
     ContactSettings contact;
     TouchReport touch; // why passes.contacts is on or off (can_touch.h)
+
+    std::vector<Damper> dampers; // run after each step (damper.h) when passes.dampers
 
     // Dynamic bodies only: the integrators and the contact stage loop over this list.
     std::vector<int> dynamic_bodies;

@@ -45,6 +45,9 @@
 //               warm start of the next step; contact_store.cpp).
 //   7. sleep    islands slow for long enough fall asleep (contact_sleep.cpp).
 //
+// After either, a scene with dampers (damper.h) runs their stage over the whole step h: the coupling
+// torques, split from the rest at first order.
+//
 // With no constraint to solve (every contact between bodies that cannot move, or none), 4 and 5
 // are replaced by the integrator over the whole step h for every awake body (free flight, in
 // contact_substeps.cpp): the same bits as a scene without contacts.
@@ -70,6 +73,7 @@
 // alone), so states are bit-identical for any thread count.
 #include "physics/step.h"
 
+#include "physics/damper.h"
 #include "physics/integrator.h"
 
 #include <cmath>
@@ -128,6 +132,7 @@ void step(const Model& m, State& s, StepWorkspace& workspace) {
         workspace.contacts.step(m, s, integrate, workspace.pool);
     else
         integrate(m, s, m.dt, m.dynamic_bodies);
+    if (m.passes.dampers) apply_dampers(m, s, m.dt); // damper.h: after the rest, first order
     ++s.step;
     check_finite(m, s);
 }

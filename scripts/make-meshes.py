@@ -13,6 +13,11 @@ sharp_top.obj  the lessons' top (docs/lessons/05-top-precession.md): the same so
          tip, so that it turns about a fixed point as the textbook's heavy top does; the same mesh
          as physics/scenes' sharp_top_mesh(48), which tests/physics/top_precession_test.cpp
          measures against its mass properties by slices.
+set_square.obj  the inertia-tensor lesson's set square (docs/lessons/07-inertia-tensor.md): a
+         30-60-90 drafting triangle 1 cm thick, the right angle at the origin, legs 30 cm along x
+         and 30 tan(30 degrees) cm along y, z from -0.5 to 0.5 cm. Convex, with products of inertia
+         in its own axes; tests/app/lesson_inertia_tensor_test.cpp checks its mass properties
+         against the triangle's closed forms and a sum over point masses.
 Faces are wound counter-clockwise seen from outside; indices are 1-based (OBJ).
 """
 import math
@@ -76,6 +81,23 @@ def revolve_with_apex(rings, segments):
     return verts, tris
 
 
+def extrude(polygon, cap_triangles, z0, z1):
+    """Closed prism over `polygon` [(x, y), ...] (counter-clockwise seen from +z) between z0 and
+    z1; cap_triangles are index triples into polygon (counter-clockwise from +z) that tile it
+    without T-junctions."""
+    n = len(polygon)
+    verts = [(x, y, z0) for x, y in polygon] + [(x, y, z1) for x, y in polygon]
+    tris = []
+    for a, b, c in cap_triangles:
+        tris.append((n + a, n + b, n + c))  # top cap faces +z
+        tris.append((a, c, b))  # bottom cap faces -z
+    for k in range(n):
+        k1 = (k + 1) % n
+        tris.append((k, k1, n + k1))  # side walls face outwards
+        tris.append((k, n + k1, n + k))
+    return verts, tris
+
+
 def write_obj(name, comment, verts, tris):
     path = os.path.join(OUT, name)
     with open(path, "w") as f:
@@ -94,6 +116,10 @@ def main():
               *revolve(top_profile, 48))
     write_obj("sharp_top.obj", "Spinning top with a point tip at the origin, axis +z, 4 cm rim",
               *revolve_with_apex(top_profile[1:], 48))
+    leg = 0.30 * math.tan(math.radians(30.0))
+    write_obj("set_square.obj", "30-60-90 set square: right angle at the origin, legs 30 cm (x) and "
+              "%.4f m (y), 1 cm thick" % leg,
+              *extrude([(0.0, 0.0), (0.30, 0.0), (0.0, leg)], [(0, 1, 2)], -0.005, 0.005))
 
 
 if __name__ == "__main__":

@@ -85,6 +85,10 @@ void print_passes(const physics::Model& m) {
     else
         std::printf("  applied loads  off: no body has an applied force or torque%s\n",
                     p.gravity ? "" : " (no velocity kicks at all)");
+    if (p.dampers)
+        std::printf("  dampers        on: %zu viscous damper%s between bodies, after each step "
+                    "(physics/damper.h)\n",
+                    m.dampers.size(), m.dampers.size() == 1 ? "" : "s");
     if (p.gyroscopic)
         std::printf("  gyroscopic     on: %d of %d dynamic bodies have unequal moments%s\n",
                     c.anisotropic, c.dynamic,

@@ -190,18 +190,19 @@ void read_state(ObjectReader r, SuiteScene& s, Context& c) {
     s.states.push_back(std::move(check));
 }
 
-// A scene path relative to the suite's folder, else a built-in scene's name.
+// A scene path relative to the suite's folder, else a built-in scene's name ("default",
+// "lessons/heavy_top": `tumble scenes` lists them).
 Scene load_entry_scene(const FieldValue& v, const Context& c) {
     const std::string arg = v.string();
     std::error_code ec;
     const std::filesystem::path local = c.folder / arg;
-    if (std::filesystem::exists(local, ec) || arg.find('/') != std::string::npos)
-        return load_scene_argument(local.string());
+    if (std::filesystem::exists(local, ec)) return load_scene_argument(local.string());
     const std::vector<std::string> builtins = builtin_scene_names();
     const std::string stem = arg.ends_with(".json") ? arg.substr(0, arg.size() - 5) : arg;
-    if (std::find(builtins.begin(), builtins.end(), stem) == builtins.end())
-        v.fail("no scene file " + local.string() + " and no built-in scene " + describe_json(arg));
-    return load_scene_argument(arg);
+    if (std::find(builtins.begin(), builtins.end(), stem) != builtins.end())
+        return load_scene_argument("builtin:" + arg); // never a file of that name elsewhere
+    if (arg.find('/') != std::string::npos) return load_scene_argument(local.string());
+    v.fail("no scene file " + local.string() + " and no built-in scene " + describe_json(arg));
 }
 
 SuiteScene read_scene_entry(ObjectReader r, Context& c) {

@@ -324,6 +324,22 @@ const Table& body() {
     return t;
 }
 
+// A viscous rotary damper between two bodies (physics/damper.h).
+const Table& damper() {
+    static const Table t{
+        "damper",
+        "a viscous rotary damper: torque c (w_B - w_A) on A, the opposite on B",
+        {{"bodies",
+          [] {
+              Type two = array_of(string(), "a body's name");
+              two.min_items = two.max_items = 2;
+              return two;
+          }(),
+          "the names of the two bodies it couples [A, B]", true},
+         {"coefficient", non_negative(), "a damping coefficient >= 0 in N m s", true}}};
+    return t;
+}
+
 const Table& scene() {
     static const Table t{
         "scene",
@@ -333,7 +349,9 @@ const Table& scene() {
          {"title", string(), "a title"},
          {"world", object(world), "the physics"},
          {"render", object(render), "how the scene is drawn"},
-         {"bodies", array_of(object(body), "a body"), "the bodies", true}}};
+         {"bodies", array_of(object(body), "a body"), "the bodies", true},
+         {"dampers", array_of(object(damper), "a damper {\"bodies\": [A, B], \"coefficient\": c}"),
+          "viscous rotary dampers between bodies"}}};
     return t;
 }
 

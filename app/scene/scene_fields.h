@@ -10,9 +10,9 @@ namespace tumble::app::scene_fields {
 
 const Table& scene(); // the whole file
 const Table& world();
-const Table& tolerance(); // world.tolerance as an object
+const Table& tolerance();                      // world.tolerance as an object
 std::vector<std::string> integrator_choices(); // world.integrator: the registry's names + "auto"
-const Table& error_estimate(); // world.error_estimate as an object
+const Table& error_estimate();                 // world.error_estimate as an object
 const Table& render();
 const Table& light();
 const Table& chart();  // render.chart
@@ -23,6 +23,7 @@ const Table& orbit();
 const Table& follow();
 const Table& keyframe();
 const Table& body();
+const Table& damper(); // an element of "dampers"
 // Shapes, one table per "type" (the loader picks by type; the schema offers them as anyOf).
 const Table& sphere();
 const Table& box();

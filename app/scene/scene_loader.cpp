@@ -1,6 +1,7 @@
 // Scene file -> Scene. The format is documented in docs/scene-format.md; keep the two in step.
 #include "app/scene/assets.h"
 #include "app/scene/body_loader.h"
+#include "app/scene/body_reference.h"
 #include "app/scene/camera_rig_reader.h"
 #include "app/scene/scene.h"
 
@@ -147,6 +148,32 @@ void read_render(ObjectReader r, RenderSettings& rs) {
     r.finish();
 }
 
+// dampers: [{"bodies": ["satellite", "rotor"], "coefficient": 0.012}] (physics/damper.h), read
+// once the bodies' names are known.
+void read_dampers(const FieldValue& list, const std::vector<std::string>& names, Scene& s) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list.at(i).reader(), fields::damper());
+        const FieldValue bodies = r.field("bodies");
+        int index[2] = {0, 0};
+        for (std::size_t k = 0; k < bodies.size(); ++k) {
+            const FieldValue b = bodies.at(k);
+            index[k] =
+                find_body(names, b.string(), s.source, b.reader().path(), "couple with a damper");
+        }
+        if (index[0] == index[1])
+            bodies.fail("expected two different bodies, got \"" + names[std::size_t(index[0])] +
+                        "\" twice");
+        const auto is_static = [&](int b) {
+            return s.bodies[std::size_t(b)].motion == physics::Motion::Static;
+        };
+        if (is_static(index[0]) && is_static(index[1]))
+            bodies.fail("expected at least one body that moves: both are static");
+        const double c = r.field("coefficient").number();
+        r.finish();
+        s.world.dampers.push_back({index[0], index[1], c});
+    }
+}
+
 } // namespace
 
 Scene load_scene(const std::string& text, const std::string& source) {
@@ -175,10 +202,11 @@ Scene load_scene(const std::string& text, const std::string& source) {
     ShapeContext shapes{source, &s.meshes, {}, &inputs};
     for (std::size_t i = 0; i < n; ++i)
         read_body(bodies.at(i).reader(), static_cast<int>(i), shapes, s.bodies[i], s.looks[i]);
-    r.finish();
-    s.content_hash = inputs.value();
     std::vector<std::string> names;
     for (const BodyLook& look : s.looks) names.push_back(look.name);
+    if (auto d = r.optional("dampers")) read_dampers(*d, names, s);
+    r.finish();
+    s.content_hash = inputs.value();
     resolve_followed_body(s.render.camera, names, source);
     resolve_render_bodies(s);
     // Physics validation, mapped to JSON paths; then what is legal but probably unintended.

@@ -29,35 +29,23 @@ Rates measure(const app::Scene& scene, const physics::Vec3& inertia) {
     };
     const physics::Quat q0 = physics::body_pose(sim.model, sim.state, plate).orientation;
     const physics::Vec3 L0 = momentum(q0, sim.state.w[plate]);
-    const physics::Vec3 n = L0.normalized(), u = n.unitOrthogonal(), v = n.cross(u);
-    std::vector<double> t, body_angle, room_angle;
-    double body = 0, room = 0, last_body = 0, last_room = 0, worst = 0;
+    TurnRates rates(L0);
+    double worst = 0;
     const auto steps = static_cast<int>(std::lround(scene.duration / sim.model.dt));
     for (int k = 0; k <= steps; ++k) {
         if (k > 0) sim.step();
         const physics::Quat q = physics::body_pose(sim.model, sim.state, plate).orientation;
-        const physics::Vec3 w = sim.state.w[plate], wb = q.conjugate() * w,
-                            axis = q * physics::Vec3::UnitZ();
-        const double b = std::atan2(wb.y(), wb.x()), r = std::atan2(axis.dot(v), axis.dot(u));
-        if (k == 0) last_body = b, last_room = r;
-        body = unwrap(body, last_body, b);
-        room = unwrap(room, last_room, r);
-        t.push_back(k * sim.model.dt);
-        body_angle.push_back(body);
-        room_angle.push_back(room);
+        const physics::Vec3 w = sim.state.w[plate];
+        rates.add(k * sim.model.dt, q.conjugate() * w, q * physics::Vec3::UnitZ());
         worst = std::max(worst, (momentum(q, w) - L0).norm() / L0.norm());
     }
-    return {slope(t, body_angle), slope(t, room_angle), worst};
+    return {rates.body(), rates.room(), worst};
 }
 
 TEST(Lessons, TheWobblingPlateTurnsAsEulersEquationsSay) {
     const app::Scene scene = lesson_scene("wobbling_plate");
     const physics::BodyDef& plate = scene.bodies[1];
-    const physics::Vec3 size = 2.0 * plate.shape.half_extents;
-    const double m = plate.mass;
-    const physics::Vec3 inertia(m * (size.y() * size.y() + size.z() * size.z()) / 12,
-                                m * (size.x() * size.x() + size.z() * size.z()) / 12,
-                                m * (size.x() * size.x() + size.y() * size.y()) / 12);
+    const physics::Vec3 inertia = box_moments(plate);
     ASSERT_EQ(inertia.x(), inertia.y()) << "the lesson's plate is square";
     const physics::Vec3 wb = plate.orientation.conjugate() * plate.angular_velocity;
     const double i1 = inertia.x(), i3 = inertia.z();
@@ -78,6 +66,43 @@ TEST(Lessons, TheWobblingPlateTurnsAsEulersEquationsSay) {
     expect_quoted(kLesson, "w_turns_in_body", r.body);
     expect_quoted(kLesson, "axis_turns_in_room", r.room);
     expect_quoted(kLesson, "wobble_over_spin", r.room / r.body);
+    expect_quoted(kLesson, "wobble_over_w3", r.room / wb.z());
+    // The cones' angles: axis to L, tan = I1 w1 / (I3 w3); axis to w, tan = w1 / w3.
+    expect_quoted(kLesson, "axis_to_L", 180 / M_PI * std::atan2(i1 * wb.x(), i3 * wb.z()));
+    expect_quoted(kLesson, "axis_to_w", 180 / M_PI * std::atan2(wb.x(), wb.z()));
+}
+
+// Exercise 1: the same throw of a plate of (almost) no thickness: I3 = 2 I1, so Omega_b = w3 and
+// |L| / I1 = sqrt(w1^2 + 4 w3^2); the scene's run with the plate 0.1 mm thick says the same.
+TEST(Lessons, AThinPlateWobblesAtTheLimitingRates) {
+    app::Scene scene = lesson_scene("wobbling_plate");
+    physics::BodyDef& plate = scene.bodies[1];
+    plate.shape.half_extents.z() = 0.5e-4;
+    const physics::Vec3 inertia = box_moments(plate);
+    const physics::Vec3 wb = plate.orientation.conjugate() * plate.angular_velocity;
+    const double thin_body = wb.z(), thin_room = std::hypot(wb.x(), 2 * wb.z());
+    const Rates r = measure(scene, inertia);
+    EXPECT_NEAR(r.body / thin_body, 1.0, 1e-6); // 0.1 mm is thin to 1e-7
+    EXPECT_NEAR(r.room / thin_room, 1.0, 1e-6);
+    expect_quoted(kLesson, "thin_w_turns_in_body", thin_body);
+    expect_quoted(kLesson, "thin_axis_turns_in_room", thin_room);
+}
+
+// Exercise 3: an engine without w x I w keeps w fixed in the world, R(t) = exp(t [w]x) R0, so
+// L = R I_body R^T w turns about w at |w| with the plate: after one turn, 2 pi / |w|, it is back.
+TEST(Lessons, WithoutTheTransportTermLTurnsWithThePlate) {
+    const app::Scene scene = lesson_scene("wobbling_plate");
+    const physics::BodyDef& plate = scene.bodies[1];
+    const physics::Vec3 w = plate.angular_velocity, inertia = box_moments(plate);
+    const auto l_at = [&](double t) {
+        const physics::Quat q =
+            physics::Quat(Eigen::AngleAxisd(t * w.norm(), w.normalized())) * plate.orientation;
+        return physics::Vec3(q * inertia.cwiseProduct(q.conjugate() * w));
+    };
+    const double period = 2 * M_PI / w.norm();
+    EXPECT_LT((l_at(period) - l_at(0)).norm(), 1e-12 * l_at(0).norm());
+    EXPECT_GT((l_at(period / 2) - l_at(0)).norm(), 0.1 * l_at(0).norm()); // it does move
+    expect_quoted(kLesson, "no_transport_L_period", period);
 }
 
 } // namespace

@@ -53,14 +53,22 @@ std::pair<double, double> predicted_rates(const Box& box) {
     return {(2 * d.dot(g) - g_g) / (2 * e), g_g / (2 * e)};
 }
 
-// (1/E) dE/dt over the first step, and E(t)/E(0) at t = `at`.
+// |L|, from the body frame: |I w_b|.
+double momentum(const app::Simulation& sim, const physics::Vec3& inertia) {
+    const physics::Quat q = physics::body_pose(sim.model, sim.state, 1).orientation;
+    return inertia.cwiseProduct(q.conjugate() * sim.state.w[1]).norm();
+}
+
+// (1/E) dE/dt over the first step, and E(t)/E(0) at t = `at`; |L(t)| / |L(0)| in `l_ratio`.
 std::pair<double, double> measured(const app::Scene& scene, const Box& box,
-                                   const std::string& integrator, double h, double at) {
+                                   const std::string& integrator, double h, double at,
+                                   double* l_ratio = nullptr) {
     app::Simulation sim = lesson_simulation(scene, integrator_named(integrator), h);
-    const double e0 = energy(sim, box.inertia);
+    const double e0 = energy(sim, box.inertia), l0 = momentum(sim, box.inertia);
     sim.step();
     const double first = (energy(sim, box.inertia) / e0 - 1) / h;
     for (int k = 1; k < std::lround(at / h); ++k) sim.step();
+    if (l_ratio) *l_ratio = momentum(sim, box.inertia) / l0;
     return {first, energy(sim, box.inertia) / e0};
 }
 
@@ -72,9 +80,18 @@ TEST(Lessons, ExplicitEulerChangesTheEnergyAtTheRateDerivedToFirstOrder) {
     expect_quoted(kLesson, "euler_rate_predicted", 100 * h * euler_rate);
     expect_quoted(kLesson, "gain_rate_predicted", 100 * h * gain_rate);
 
-    const auto [euler_first, euler_5s] = measured(scene, box, "euler", h, 5.0);
-    const auto [momentum_first, momentum_5s] = measured(scene, box, "euler_momentum", h, 5.0);
-    const auto [symplectic_first, symplectic_5s] = measured(scene, box, "symplectic_euler", h, 5.0);
+    double euler_l = 0, momentum_l = 0, symplectic_l = 0;
+    const auto [euler_first, euler_5s] = measured(scene, box, "euler", h, 5.0, &euler_l);
+    const auto [momentum_first, momentum_5s] =
+        measured(scene, box, "euler_momentum", h, 5.0, &momentum_l);
+    const auto [symplectic_first, symplectic_5s] =
+        measured(scene, box, "symplectic_euler", h, 5.0, &symplectic_l);
+    // |L|: the (x, P, q, L) loop adds h tau = 0 to L every step, so it keeps L to round-off.
+    TUMBLE_MEASURED(std::abs(momentum_l - 1), 1e-13);
+    EXPECT_LT(std::abs(momentum_l - 1), 1e-13);
+    expect_quoted(kLesson, "euler_L_5s", euler_l);
+    expect_quoted(kLesson, "euler_momentum_L_5s", momentum_l);
+    expect_quoted(kLesson, "symplectic_euler_L_5s", symplectic_l);
     // O(h) relative: h |w| = 0.037 here.
     const double euler_off = std::abs(euler_first / (h * euler_rate) - 1);
     const double momentum_off = std::abs(momentum_first / (h * gain_rate) - 1);
@@ -100,6 +117,26 @@ TEST(Lessons, ExplicitEulerChangesTheEnergyAtTheRateDerivedToFirstOrder) {
     EXPECT_NEAR(halving, 2.0, 0.1);
     expect_quoted(kLesson, "euler_1s", euler_1s);
     expect_quoted(kLesson, "euler_1s_half_step", euler_1s_half);
+
+    // Exercise 1: at 2h, first order doubles the loss in log E: E / E0 about euler_1s^2.
+    const double euler_1s_double = measured(scene, box, "euler", 2 * h, 1.0).second;
+    const double predicted = euler_1s * euler_1s;
+    TUMBLE_MEASURED(std::abs(std::log(euler_1s_double) / std::log(predicted) - 1), 0.1);
+    EXPECT_NEAR(std::log(euler_1s_double) / std::log(predicted), 1.0, 0.1);
+    expect_quoted(kLesson, "euler_1s_double_step_predicted", predicted);
+    expect_quoted(kLesson, "euler_1s_double_step", euler_1s_double);
+}
+
+// Exercise 3: spun about one principal axis, g = L_b x w_b = 0: Euler's equations say nothing
+// changes, and every first-order term of the drift vanishes (d . g = g . I^-1 g = 0). The course
+// loop keeps the energy to round-off.
+TEST(Lessons, ABoxSpunAboutOneAxisKeepsItsEnergyInTheCourseLoop) {
+    app::Scene scene = lesson_scene("euler_box");
+    scene.bodies[1].angular_velocity = scene.bodies[1].orientation * physics::Vec3(0, 0, 3);
+    const Box box = lesson_box(scene);
+    const double e5 = measured(scene, box, "euler", scene.world.dt, 5.0).second;
+    TUMBLE_MEASURED(std::abs(e5 - 1), 1e-12);
+    EXPECT_LT(std::abs(e5 - 1), 1e-12);
 }
 
 } // namespace

@@ -28,10 +28,11 @@ struct Turn {
     double norm_growth; // product over the steps of |q + h 1/2 (0, w) (x) q| / |q|
 };
 
-Turn turn(const app::Scene& scene, const std::string& integrator) {
-    app::Simulation sim = lesson_simulation(scene, integrator_named(integrator));
+Turn turn(const app::Scene& scene, const std::string& integrator, double seconds = kSeconds,
+          std::optional<double> dt = {}) {
+    app::Simulation sim = lesson_simulation(scene, integrator_named(integrator), dt);
     const double h = sim.model.dt;
-    const auto steps = static_cast<int>(std::lround(kSeconds / h));
+    const auto steps = static_cast<int>(std::lround(seconds / h));
     Turn t{0, 0, 1};
     for (int k = 0; k < steps; ++k) {
         const physics::Quat q = sim.state.q[1];
@@ -69,6 +70,45 @@ TEST(Lessons, EachStepTurnsTheSpinningCubeByItsClosedFormAngle) {
     expect_quoted(kLesson, "quaternion_lag_10s", split.total - renormalised.total);
     expect_quoted(kLesson, "matrix_lag_10s", split.total - gram_schmidt.total);
     expect_quoted(kLesson, "norm_without_renormalising_10s", renormalised.norm_growth);
+
+    // When the lag becomes visible (a tenth of a radian, 6 degrees, side by side): after
+    // ceil(0.1 / lag per step) steps.
+    const auto visible_after = [&](double lag_per_step, double step) {
+        return std::ceil(0.1 / lag_per_step) * step;
+    };
+    expect_quoted(kLesson, "matrix_visible", visible_after(exact - matrix, h));
+    expect_quoted(kLesson, "quaternion_visible", visible_after(exact - quaternion, h));
+    // At a usual step, h = 1/240 s, the lags per step are about (h |w|)^3 / 3 and / 12; the runs
+    // at that step lag the exact turn by 0.1 rad exactly when the closed forms say.
+    const double h240 = 1.0 / 240, x = h240 * w;
+    const double matrix_240 = visible_after(x - std::atan(x), h240),
+                 quaternion_240 = visible_after(x - 2 * std::atan(x / 2), h240);
+    for (const auto& [name, at] :
+         {std::pair{"euler", matrix_240}, std::pair{"euler_momentum", quaternion_240}}) {
+        const Turn before = turn(scene, name, at - h240, h240), after = turn(scene, name, at, h240);
+        const double steps_before = std::round((at - h240) / h240),
+                     steps_after = std::round(at / h240);
+        EXPECT_LT(steps_before * x - before.total, 0.1) << name;
+        EXPECT_GE(steps_after * x - after.total, 0.1) << name;
+    }
+    expect_quoted(kLesson, "matrix_visible_240", matrix_240);
+    expect_quoted(kLesson, "quaternion_visible_240", quaternion_240);
+}
+
+// Exercises: at half the step (h = 1/60 s) the quaternion loop's lag after 10 s is about a
+// quarter (the lag per step is (h |w|)^3 / 12, per second (h |w|)^2 |w| / 12), and the length it
+// would reach without renormalising is (1 + (h |w| / 2)^2)^(n / 2) with n = 600.
+TEST(Lessons, HalvingTheCubesStepQuartersTheQuaternionLag) {
+    const app::Scene scene = lesson_scene("quaternion_spin");
+    const double h = scene.world.dt / 2, w = scene.bodies[1].angular_velocity.norm();
+    const double n = std::round(kSeconds / h);
+    const Turn q = turn(scene, "euler_momentum", kSeconds, h),
+               exact = turn(scene, "splitting", kSeconds, h);
+    const double lag = exact.total - q.total;
+    EXPECT_NEAR(lag, n * (h * w - 2 * std::atan(h * w / 2)), 1e-9);
+    EXPECT_NEAR(q.norm_growth / std::pow(1 + h * h * w * w / 4, n / 2), 1.0, 1e-9);
+    expect_quoted(kLesson, "quaternion_lag_10s_half_step", lag);
+    expect_quoted(kLesson, "norm_without_renormalising_10s_half_step", q.norm_growth);
 }
 
 } // namespace

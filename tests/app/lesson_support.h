@@ -21,7 +21,9 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace tumble::test {
 
@@ -51,6 +53,23 @@ inline physics::Integrator integrator_named(const std::string& name) {
     return *physics::integrator_from_name(name);
 }
 
+// The index of the body the scene names `name` (the same in the Model built from it).
+inline int body_index(const app::Scene& scene, const std::string& name) {
+    for (std::size_t i = 0; i < scene.looks.size(); ++i)
+        if (scene.looks[i].name == name) return static_cast<int>(i);
+    ADD_FAILURE() << "the scene has no body \"" << name << "\"";
+    return 0;
+}
+
+// Principal moments of a box body from the box formula I1 = m (b^2 + c^2) / 12 (and cyclic), with
+// b, c the other two edges: independent of the model's own mass properties.
+inline physics::Vec3 box_moments(const physics::BodyDef& b) {
+    const physics::Vec3 s = 2.0 * b.shape.half_extents;
+    return {b.mass * (s.y() * s.y() + s.z() * s.z()) / 12,
+            b.mass * (s.x() * s.x() + s.z() * s.z()) / 12,
+            b.mass * (s.x() * s.x() + s.y() * s.y()) / 12};
+}
+
 // The value string of `key` in the lesson's table ("" if absent).
 inline std::string quoted_text(const std::string& lesson, const std::string& key) {
     const std::string text = read_text(lesson_file(lesson));
@@ -60,6 +79,18 @@ inline std::string quoted_text(const std::string& lesson, const std::string& key
     const std::size_t from = at + start.size();
     std::string value = text.substr(from, text.find(" |", from) - from);
     return value;
+}
+
+// The keys of the lesson's "Numbers, checked" table (the last section), in order.
+inline std::vector<std::string> table_keys(const std::string& lesson) {
+    std::vector<std::string> keys;
+    const std::string text = read_text(lesson_file(lesson));
+    const std::size_t at = text.find("\n## Numbers, checked");
+    if (at == std::string::npos) return keys;
+    std::istringstream in(text.substr(at));
+    for (std::string line; std::getline(in, line);)
+        if (line.starts_with("| `")) keys.push_back(line.substr(3, line.find('`', 3) - 3));
+    return keys;
 }
 
 // Half a unit of the last digit of a decimal number as written: "3.72" -> 0.005, "1.2e-05" ->
@@ -80,7 +111,13 @@ inline void expect_quoted(const std::string& lesson, const std::string& key, dou
     std::printf("[lesson] %s %s: quoted %s, measured %.9g\n", lesson.c_str(), key.c_str(),
                 v.c_str(), measured);
     ASSERT_FALSE(v.empty()) << lesson << " has no row `" << key << "` in its Numbers table";
-    const double quoted = std::stod(v);
+    double quoted = 0;
+    try {
+        quoted = std::stod(v);
+    } catch (const std::exception&) {
+        FAIL() << "docs/lessons/" << lesson << ": `" << key << "` quotes \"" << v
+               << "\", not a number";
+    }
     const double tolerance = half_last_digit(v) * (1 + 1e-9);
     EXPECT_LE(std::abs(measured - quoted), tolerance)
         << "docs/lessons/" << lesson << " quotes " << key << " = " << v << " but the test measures "
@@ -90,6 +127,12 @@ inline void expect_quoted(const std::string& lesson, const std::string& key, dou
     EXPECT_NE(text.find(v, first + 1), std::string::npos)
         << "docs/lessons/" << lesson << ": " << v << " (" << key
         << ") is in the table but not in the text";
+}
+
+// The angle between two vectors, accurate near 0 and pi (acos of a dot product is not: it
+// resolves no angle below about 1e-8).
+inline double angle_between(const physics::Vec3& a, const physics::Vec3& b) {
+    return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 // Least-squares slope of y against x.
@@ -107,5 +150,31 @@ inline double unwrap(double unwrapped, double& last, double a) {
     last = a;
     return unwrapped;
 }
+
+// The two turns of a torque-free symmetric body, fitted over a run: (w1, w2) about the body's axis
+// as seen from the body, and the axis about the fixed L as seen from the room (lessons 1 and 8).
+class TurnRates {
+  public:
+    explicit TurnRates(const physics::Vec3& l)
+        : u_(l.normalized().unitOrthogonal()), v_(l.normalized().cross(u_)) {}
+    // At time t: w in the body's axes, and the body's axis in the world.
+    void add(double t, const physics::Vec3& w_body, const physics::Vec3& axis) {
+        const double b = std::atan2(w_body.y(), w_body.x()),
+                     r = std::atan2(axis.dot(v_), axis.dot(u_));
+        if (t_.empty()) last_body_ = b, last_room_ = r;
+        body_ = unwrap(body_, last_body_, b);
+        room_ = unwrap(room_, last_room_, r);
+        t_.push_back(t);
+        body_angle_.push_back(body_);
+        room_angle_.push_back(room_);
+    }
+    double body() const { return slope(t_, body_angle_); }
+    double room() const { return slope(t_, room_angle_); }
+
+  private:
+    physics::Vec3 u_, v_;
+    std::vector<double> t_, body_angle_, room_angle_;
+    double body_ = 0, room_ = 0, last_body_ = 0, last_room_ = 0;
+};
 
 } // namespace tumble::test

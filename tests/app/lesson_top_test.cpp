@@ -105,6 +105,49 @@ TEST(Lessons, TheTopPrecessesAtTheSteadyRateOfTheHeavyTop) {
     expect_quoted(kLesson, "eps", 100 * top.eps());
     expect_quoted(kLesson, "measured_rate", rate);
     expect_quoted(kLesson, "period", 2 * kPi / rate);
+
+    // The parallel-axis theorem: I1' = I1 + m d^2 about the tip.
+    expect_quoted(kLesson, "i1_centre", 1e6 * (top.i1_tip - top.m * top.d * top.d));
+    expect_quoted(kLesson, "i1_tip", 1e6 * top.i1_tip);
+    // L about the tip: I3 w3 a + I1' W (e_z - cos(theta) a); the second part, of size
+    // I1' W sin(theta), against the first.
+    expect_quoted(kLesson, "spin_momentum", 1e3 * top.i3 * top.w3);
+    expect_quoted(kLesson, "precession_momentum_ratio",
+                  top.i1_tip * omega * std::sin(top.theta) / (top.i3 * top.w3));
+    // Steady precession at this tilt needs (I3 w3)^2 >= 4 I1' cos(theta) m g d.
+    expect_quoted(kLesson, "steady_threshold",
+                  std::sqrt(4 * top.i1_tip * std::cos(top.theta) * top.m * top.g * top.d) / top.i3);
+    // In a 60 fps video the top turns w3 / fps between frames; the eye sees the nearest turn.
+    const double per_frame = top.w3 / scene.render.fps;
+    expect_quoted(kLesson, "turn_per_frame", per_frame);
+    expect_quoted(kLesson, "apparent_turn_per_frame", std::remainder(per_frame, 2 * kPi));
+    expect_quoted(kLesson, "apparent_spin", std::remainder(per_frame, 2 * kPi) * scene.render.fps);
+}
+
+// Let go from a pure spin (axis at rest) the top nods: the fast-top estimates of the nutation,
+// 2 I1' m g d sin(theta) / (I3 w3)^2 deep and 2 pi I1' / (I3 w3) long (Goldstein section 5.7),
+// against the scene's top started that way (lesson 9 follows the exact theory).
+TEST(Lessons, LetGoFromAPureSpinTheTopNodsByTheFastTopEstimate) {
+    app::Scene scene = lesson_scene("top_precession");
+    const Top base = top_of(lesson_simulation(scene));
+    scene.bodies[1].angular_velocity = base.w3 * base.axis;
+    scene.bodies[1].velocity = physics::Vec3::Zero();
+    app::Simulation sim = lesson_simulation(scene);
+    const Top top = top_of(sim);
+    const double l3 = top.i3 * top.w3;
+    const double depth = 2 * top.i1_tip * top.m * top.g * top.d * std::sin(top.theta) / (l3 * l3);
+    const double period = 2 * kPi * top.i1_tip / l3;
+    double deepest = 0;
+    for (int k = 0; k < std::lround(20 * period / sim.model.dt); ++k) {
+        sim.step();
+        const physics::Vec3 a =
+            physics::body_pose(sim.model, sim.state, 1).orientation * physics::Vec3::UnitZ();
+        deepest = std::max(deepest, std::acos(a.z()) - top.theta);
+    }
+    TUMBLE_MEASURED(std::abs(deepest / depth - 1), 0.15);
+    EXPECT_NEAR(deepest / depth, 1.0, 0.15);
+    expect_quoted(kLesson, "nutation_if_let_go", 180 / kPi * depth);
+    expect_quoted(kLesson, "nutation_period_if_let_go", 1e3 * period);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 namespace tumble::test {
@@ -52,9 +53,14 @@ TEST(Schemas, EveryBuiltInSceneAndEveryCommittedSuiteIsValid) {
                              "> suite.json")
                   .exit_code,
               0);
+    // Every built-in scene, the lessons' (assets/scenes/lessons/) included: all that
+    // app/CMakeLists.txt embeds.
     std::vector<std::string> scenes;
-    for (const auto& e : std::filesystem::directory_iterator(kSource / "assets/scenes"))
+    for (const auto& e : std::filesystem::recursive_directory_iterator(kSource / "assets/scenes"))
         if (e.path().extension() == ".json") scenes.push_back(e.path().string());
+    ASSERT_TRUE(std::any_of(scenes.begin(), scenes.end(), [](const std::string& s) {
+        return s.find("/lessons/") != std::string::npos;
+    })) << "the lesson scenes are built-in scenes too";
     for (const auto& [file, verdict] : validate(dir, "scene.json", scenes))
         EXPECT_EQ(verdict, "valid " + file);
     EXPECT_EQ(validate(dir, "scene.json", scenes).size(), scenes.size());
