@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <vector>
 
 namespace tumble::render {
 
@@ -93,15 +94,54 @@ std::string size_text(const Image& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
+// The largest 8-connected cluster of the pixels flagged in `differs` (row-major, width x
+// height): its size and bounding box, by a flood fill from each unvisited flagged pixel.
+void find_largest_cluster(std::vector<std::uint8_t>& differs, int width, int height,
+                          CompareResult& r) {
+    std::vector<int> stack;
+    for (int start = 0; start < width * height; ++start) {
+        if (differs[std::size_t(start)] != 1) continue;
+        differs[std::size_t(start)] = 2; // visited
+        stack.assign(1, start);
+        std::int64_t size = 0;
+        int x0 = width, y0 = height, x1 = -1, y1 = -1;
+        while (!stack.empty()) {
+            const int at = stack.back(), x = at % width, y = at / width;
+            stack.pop_back();
+            ++size;
+            x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+            for (int ny = std::max(0, y - 1); ny <= std::min(height - 1, y + 1); ++ny)
+                for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx)
+                    if (std::uint8_t& n = differs[std::size_t(ny * width + nx)]; n == 1) {
+                        n = 2;
+                        stack.push_back(ny * width + nx);
+                    }
+        }
+        if (size > r.largest_cluster) {
+            r.largest_cluster = size;
+            r.cluster_box = {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
+        }
+    }
+}
+
+std::string cluster_text(const CompareResult& r, const CompareOptions& o) {
+    const PixelBox& b = r.cluster_box;
+    return "largest cluster " + std::to_string(r.largest_cluster) + " pixels (allowed " +
+           (o.max_cluster < 0 ? std::string("any") : std::to_string(o.max_cluster)) + ") in the " +
+           std::to_string(b.width) + "x" + std::to_string(b.height) + " box at (" +
+           std::to_string(b.x) + ", " + std::to_string(b.y) + ")";
+}
+
 std::string summarize(const CompareResult& r, const CompareOptions& o) {
     if (r.identical) {
         return "identical (max channel delta " + std::to_string(r.max_channel_delta) +
                ", tolerance " + std::to_string(o.tolerance) + ")";
     }
     return std::to_string(r.different) + " pixels differ (allowed " +
-           std::to_string(o.max_different) + "), " + std::to_string(r.antialiased) +
-           " anti-aliased; max channel delta " + std::to_string(r.max_channel_delta) +
-           ", tolerance " + std::to_string(o.tolerance);
+           std::to_string(o.max_different) + ")" +
+           (r.different > 0 ? ", " + cluster_text(r, o) : std::string()) + ", " +
+           std::to_string(r.antialiased) + " anti-aliased; max channel delta " +
+           std::to_string(r.max_channel_delta) + ", tolerance " + std::to_string(o.tolerance);
 }
 
 } // namespace
@@ -119,6 +159,7 @@ CompareResult compare_images(const Image& a, const Image& b, const CompareOption
     const double t = std::clamp(options.perceptual_threshold, 0.0, 1.0);
     const double min_distance = t * t * yiq_distance(black, white);
     result.diff = Image(a.width, a.height);
+    std::vector<std::uint8_t> differs(std::size_t(a.width) * std::size_t(a.height), 0);
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {
             const std::uint8_t *p = pixel(a, x, y), *q = pixel(b, x, y);
@@ -134,12 +175,15 @@ CompareResult compare_images(const Image& a, const Image& b, const CompareOption
                 write_mark(out, 255, 255, 0);
             } else {
                 ++result.different;
+                differs[std::size_t(y) * std::size_t(a.width) + std::size_t(x)] = 1;
                 write_mark(out, 255, 0, 0);
             }
         }
     }
+    find_largest_cluster(differs, a.width, a.height, result);
     result.identical = result.different == 0 && result.antialiased == 0;
-    result.matches = result.different <= options.max_different;
+    result.matches = result.different <= options.max_different &&
+                     (options.max_cluster < 0 || result.largest_cluster <= options.max_cluster);
     result.summary = summarize(result, options);
     return result;
 }

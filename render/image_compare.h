@@ -10,6 +10,11 @@
 //     inside a flat area in both images), which is what different GPU drivers, Mesa versions or
 //     rounding produce along edges; counted apart, not held against the images; or
 //   * different: everything else. Counted against `max_different`.
+// Differing pixels that touch (8-connected) form a *cluster*. The count alone cannot tell a small
+// object missing or moved (10 pixels at one place) from renderer noise (10 single pixels along
+// edges all over the picture); the size of the largest cluster can, so it is bounded beside the
+// count (`max_cluster`), the way a connected-component pass over a diff mask separates blobs
+// from speckle in visual regression tools.
 // The idea is that of pixelmatch (Mapbox) and of the paper it follows, Kotsarenko and Ramos,
 // "Measuring perceived color difference using YIQ NTSC transmission color space"; this is an
 // independent implementation of it for 8-bit RGB.
@@ -27,15 +32,26 @@ struct CompareOptions {
     double perceptual_threshold = 0;
     std::int64_t max_different = 0;  // the images match when at most this many pixels differ
     bool detect_antialiasing = true; // false: every changed pixel is "different"
+    // The images match only when no cluster of touching differing pixels is larger than this;
+    // negative: no bound beyond max_different.
+    std::int64_t max_cluster = -1;
+};
+
+// Pixels from the image's top-left corner, for the largest cluster's bounding box.
+struct PixelBox {
+    int x = 0, y = 0, width = 0, height = 0;
 };
 
 struct CompareResult {
     bool same_size = false;
     bool identical = false;    // same size and no changed pixel at all (within tolerance)
-    bool matches = false;      // same size and different <= max_different (AA pixels allowed)
+    bool matches = false;      // same size, different <= max_different and, when bounded,
+                               // largest_cluster <= max_cluster (AA pixels allowed)
     int max_channel_delta = 0; // largest |a - b| over all pixels and channels
     std::int64_t different = 0;
     std::int64_t antialiased = 0;
+    std::int64_t largest_cluster = 0; // differing pixels in the largest 8-connected cluster
+    PixelBox cluster_box;             // that cluster's bounding box (empty without one)
     // Same size as the inputs: a faded grey copy of the first image, with different pixels red
     // and anti-aliased ones yellow. Empty when the sizes differ.
     Image diff;

@@ -56,6 +56,8 @@ Subcommand add_diff_command(CLI::App& app) {
                   "YIQ perceptual threshold (0..1)")
         ->check(CLI::Range(0.0, 1.0));
     d->add_option("--max-different", cmd->options.max_different, "pixels allowed to differ");
+    d->add_option("--max-cluster", cmd->options.max_cluster,
+                  "largest cluster of touching differing pixels allowed (default: any)");
     d->add_flag_callback(
         "--no-aa", [cmd] { cmd->options.detect_antialiasing = false; },
         "count anti-aliased pixels as different (default: anti-aliasing is forgiven)");

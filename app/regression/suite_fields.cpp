@@ -36,6 +36,8 @@ const Table& compare() {
         {{"tolerance", integer(0, 255), "a per-channel tolerance, 0..255"},
          {"perceptual_threshold", number_in(0, 1), "a YIQ threshold in [0, 1]"},
          {"max_different", integer(0, 1 << 30), "a maximum count of differing pixels"},
+         {"max_cluster", integer(0, 1 << 30),
+          "a maximum size in pixels of a cluster of touching differing pixels"},
          {"detect_antialiasing", boolean(),
           "true or false: count anti-aliased pixels apart (true by default)"}}};
     return t;

@@ -33,6 +33,7 @@ render::CompareOptions read_compare(ObjectReader r, render::CompareOptions c) {
     if (auto v = r.optional("tolerance")) c.tolerance = v->integer();
     if (auto v = r.optional("perceptual_threshold")) c.perceptual_threshold = v->number();
     if (auto v = r.optional("max_different")) c.max_different = v->integer();
+    if (auto v = r.optional("max_cluster")) c.max_cluster = v->integer();
     if (auto v = r.optional("detect_antialiasing")) c.detect_antialiasing = v->boolean();
     r.finish();
     return c;

@@ -4,8 +4,13 @@
 // threads change nothing in the output.
 #include "app/bad_input_case.h"
 #include "app/cli_runner.h"
+#include "render/png_io.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
 
 namespace tumble::test {
 namespace {
@@ -158,16 +163,25 @@ TEST(ContactInput, UnusedThreadsAreReported) {
     EXPECT_EQ(used.err.find("not used"), std::string::npos) << used.err;
 }
 
-// Threads split the contact stage's work into fixed ranges: the states must be the same bits.
-TEST(ContactInput, SimulateGivesIdenticalStatesWithOneAndTwoPhysicsThreads) {
+// Threads split the contact stage's work into fixed ranges: the states must be the same bits for
+// 1, 2, 3 and 4 threads (even and uneven splits, and more workers than the machine's 2 cores).
+TEST(ContactInput, SimulateGivesIdenticalStatesForOneToFourPhysicsThreads) {
     const auto dir = scratch_dir();
     write_text(dir / "pile.json", pile_scene());
     const char* common = "simulate pile.json --every 12 -q";
-    ASSERT_EQ(run_tumble(dir, std::string(common) + " --threads 1 -o one.csv").exit_code, 0);
-    ASSERT_EQ(run_tumble(dir, std::string(common) + " --threads 2 -o two.csv").exit_code, 0);
-    const std::string one = read_text(dir / "one.csv");
-    EXPECT_GT(one.size(), 20000u);              // 27 bodies x 31 rows
-    EXPECT_EQ(one, read_text(dir / "two.csv")); // %.17g: equal text = equal bits
+    std::vector<std::string> csv;
+    for (int threads = 1; threads <= 4; ++threads) {
+        const std::string out = std::to_string(threads) + ".csv";
+        ASSERT_EQ(run_tumble(dir, std::string(common) + " --threads " + std::to_string(threads) +
+                                      " -o " + out)
+                      .exit_code,
+                  0);
+        csv.push_back(read_text(dir / out));
+    }
+    const std::string& one = csv[0];
+    EXPECT_GT(one.size(), 20000u);                 // 27 bodies x 31 rows
+    for (int threads = 2; threads <= 4; ++threads) // %.17g: equal text = equal bits
+        EXPECT_TRUE(csv[std::size_t(threads - 1)] == one) << threads << " threads differ from 1";
     // The pile moved: the top body's state in the last row (body 26 at the last step) differs
     // from its first row.
     const std::string tag = "\"body 26\",";
@@ -176,6 +190,33 @@ TEST(ContactInput, SimulateGivesIdenticalStatesWithOneAndTwoPhysicsThreads) {
     ASSERT_NE(first, last);
     EXPECT_NE(one.substr(first, one.find('\n', first) - first),
               one.substr(last, one.find('\n', last) - last));
+}
+
+// The frames a user renders are the same pixels for 1, 2, 3 and 4 physics threads (PNG frames,
+// compared as decoded pixels), and the pile moves in them.
+TEST(ContactInput, RenderGivesIdenticalFramesForOneToFourPhysicsThreads) {
+    const auto dir = scratch_dir();
+    write_text(dir / "pile.json", pile_scene());
+    std::vector<std::vector<render::Image>> runs;
+    for (int threads = 1; threads <= 4; ++threads) {
+        const std::string out = std::to_string(threads) + "threads/";
+        const CliResult r = run_tumble(dir, "render pile.json --duration 1 --fps 10 --width 160 "
+                                            "--height 90 -q --threads " +
+                                                std::to_string(threads) + " -o " + out);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        std::vector<render::Image> frames;
+        for (int k = 0; k < 10; ++k) {
+            char name[16];
+            std::snprintf(name, sizeof name, "%06d.png", k);
+            frames.push_back(render::read_png(dir / out / name));
+        }
+        runs.push_back(std::move(frames));
+    }
+    for (std::size_t t = 1; t < runs.size(); ++t)
+        for (std::size_t k = 0; k < runs[0].size(); ++k)
+            EXPECT_TRUE(runs[t][k].rgb == runs[0][k].rgb)
+                << "frame " << k << " with " << t + 1 << " threads differs from 1 thread";
+    EXPECT_FALSE(runs[0].front().rgb == runs[0].back().rgb) << "the pile did not move";
 }
 
 TEST(ContactInput, ThreadCountOutsideItsRangeIsRefused) {

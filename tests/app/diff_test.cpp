@@ -33,5 +33,26 @@ TEST(Diff, ExitCodesAndDiffImageForScripts) {
     EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
 }
 
+// --max-cluster bounds the largest cluster of touching differing pixels beside the count: a 3x3
+// blob passes a count of 40 and fails a cluster bound of 4.
+TEST(Diff, MaxClusterFailsABlobTheCountAllows) {
+    const auto dir = scratch_dir();
+    render::Image blob = render::read_png(kGoldens / "default_0000.png");
+    for (int y = 40; y < 43; ++y)
+        for (int x = 60; x < 63; ++x) {
+            std::uint8_t* p = blob.row(y) + 3 * x;
+            p[0] = 255, p[1] = 0, p[2] = 255;
+        }
+    render::write_png(dir / "blob.png", blob);
+    const std::string args = "diff '" + (kGoldens / "default_0000.png").string() + "' blob.png";
+    CliResult r = run_tumble(dir, args + " --max-different 40");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    r = run_tumble(dir, args + " --max-different 40 --max-cluster 4");
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_NE(r.out.find("largest cluster 9 pixels (allowed 4) in the 3x3 box at (60, 40)"),
+              std::string::npos)
+        << r.out;
+}
+
 } // namespace
 } // namespace tumble::test

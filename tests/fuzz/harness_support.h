@@ -1,7 +1,8 @@
 #pragma once
 // Shared by the fuzz harnesses (tests/fuzz/*_fuzz.cpp): a promise check that turns a broken
-// promise into a crash libFuzzer records, and a per-process scratch folder for the readers that
-// take a file rather than text.
+// promise into a crash libFuzzer records, what the reader made of the last input (for the
+// replay's check that the valid seeds load), and a per-process scratch folder for the readers
+// that take a file rather than text.
 #include <unistd.h>
 
 #include <cstddef>
@@ -22,6 +23,17 @@ inline void require(bool ok, const char* what, const std::string& detail = "") {
     if (!detail.empty())
         std::fprintf(stderr, "fuzz: %zu bytes: %.300s\n", detail.size(), detail.c_str());
     std::abort();
+}
+
+// What the harness's reader made of the last input, set by each harness: loaded (a scene or a
+// suite came out) or refused (io::BadInput). libFuzzer ignores it; the replay (replay_main.cpp)
+// holds the corpus's seeds to their names: good_* and asset_* must load, bad_* must be refused,
+// so that a reader refusing everything (or accepting everything) fails the replay.
+enum class Verdict { kNone, kLoaded, kRefused };
+
+inline Verdict& last_verdict() {
+    static Verdict verdict = Verdict::kNone;
+    return verdict;
 }
 
 // A refusal's message names the input first (the file, or the scene's source) and is short: a

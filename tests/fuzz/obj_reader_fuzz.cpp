@@ -34,7 +34,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         require(scene.bodies[1].mesh->triangles.size() >= 4, "a closed mesh has 4+ triangles");
         const double mass = scene.bodies[1].mass;
         require(std::isfinite(mass) && mass > 0.0, "the mesh body's mass is positive and finite");
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kLoaded;
     } catch (const tumble::io::BadInput& e) {
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kRefused;
         tumble::fuzz::require_clear_error(e.what(), source);
     }
     return 0;

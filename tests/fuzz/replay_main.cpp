@@ -4,7 +4,13 @@
 // order, and prints how many it ran. Fails (exit 1) on an exception escaping the harness, naming
 // the file; on a folder that does not exist; and when it ran no file at all, since a replay that
 // checked nothing proves nothing. A crash names its file too (the signal handler below).
+// Seeds are also held to their names (the harness says what its reader made of each input,
+// harness_support.h): a file named good_* or asset_* must load and one named bad_* must be
+// refused, so that a reader refusing every input, or accepting every one, fails the replay;
+// any other name (libFuzzer's crash-<sha1>, merged coverage) may go either way.
 //   fuzz_replay_<harness> <folder>...
+#include "harness_support.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -63,6 +69,27 @@ bool inputs_in(const fs::path& folder, std::vector<fs::path>& out) {
     return true;
 }
 
+// What a seed's name promises: good_* and asset_* load, bad_* are refused, others either.
+tumble::fuzz::Verdict promised(const fs::path& file) {
+    const std::string name = file.filename().string();
+    const auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+    if (starts("good_") || starts("asset_")) return tumble::fuzz::Verdict::kLoaded;
+    if (starts("bad_")) return tumble::fuzz::Verdict::kRefused;
+    return tumble::fuzz::Verdict::kNone;
+}
+
+const char* describe(tumble::fuzz::Verdict v) {
+    switch (v) {
+    case tumble::fuzz::Verdict::kLoaded:
+        return "loaded";
+    case tumble::fuzz::Verdict::kRefused:
+        return "refused";
+    case tumble::fuzz::Verdict::kNone:
+        break;
+    }
+    return "neither loaded nor refused";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -77,10 +104,12 @@ int main(int argc, char** argv) {
             return 1;
         }
     name_file_on_crash();
+    int held = 0, broken = 0; // seeds held to their names; of those, how many broke the promise
     for (const fs::path& file : files) {
         std::snprintf(g_current, sizeof g_current, "%s", file.c_str());
         const std::vector<std::uint8_t> bytes = read_bytes(file);
         const std::uint8_t none = 0; // libFuzzer never passes a null pointer, even for 0 bytes
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kNone;
         try {
             LLVMFuzzerTestOneInput(bytes.empty() ? &none : bytes.data(), bytes.size());
         } catch (const std::exception& e) {
@@ -91,8 +120,18 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "replay: %s: a non-standard exception escaped\n", g_current);
             return 1;
         }
+        const tumble::fuzz::Verdict expected = promised(file);
+        if (expected == tumble::fuzz::Verdict::kNone) continue;
+        ++held;
+        if (tumble::fuzz::last_verdict() != expected) {
+            ++broken;
+            std::fprintf(stderr, "replay: %s: expected to be %s by its name, but was %s\n",
+                         g_current, describe(expected), describe(tumble::fuzz::last_verdict()));
+        }
     }
-    std::printf("replayed %zu files from %d folders\n", files.size(), argc - 1);
+    std::printf("replayed %zu files from %d folders; %d seeds held to their names (good_*, "
+                "asset_* load; bad_* refused), %d broke it\n",
+                files.size(), argc - 1, held, broken);
     if (files.empty()) std::fprintf(stderr, "replay: no input files: nothing was checked\n");
-    return files.empty() ? 1 : 0;
+    return files.empty() || broken > 0 ? 1 : 0;
 }

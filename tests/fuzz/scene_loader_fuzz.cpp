@@ -26,7 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         require(scene.looks.size() == scene.bodies.size(), "one look per body");
         require(scene.source == kSource, "the scene keeps its source");
         require(text.find('\0') == std::string::npos, "a NUL byte is refused (JSON has none)");
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kLoaded;
     } catch (const tumble::io::BadInput& e) {
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kRefused;
         tumble::fuzz::require_clear_error(e.what(), kSource);
     }
     return 0;

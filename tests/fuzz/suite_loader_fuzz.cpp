@@ -57,7 +57,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string text(reinterpret_cast<const char*>(data), size);
         require(text.find('\0') == std::string::npos, "a NUL byte is refused (JSON has none)");
         check_suite(suite);
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kLoaded;
     } catch (const tumble::io::BadInput& e) {
+        tumble::fuzz::last_verdict() = tumble::fuzz::Verdict::kRefused;
         const std::string what = e.what();
         require(what.size() <= 4096, "the error message is short", what);
         require(!what.empty(), "the error message says something", what);

@@ -1,6 +1,6 @@
 // Determinism of the contact pipeline on the 1000-sphere rain: two runs bit-identical, a copied
-// State continues bit-identically, two threads give the single-threaded bits, and the final state
-// is pinned by a hash (Box2D's test_determinism habit), so that any change to the results is
+// State continues bit-identically, 2, 3 and 4 threads give the single-threaded bits, and the final
+// state is pinned by a hash (Box2D's test_determinism habit), so that any change to the results is
 // seen and made on purpose.
 #include "measured.h"
 #include "physics/scenes/sphere_rain.h"
@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 namespace tumble::physics {
 namespace {
@@ -45,6 +46,39 @@ TEST(ContactDeterminism, TwoRunsAreBitIdentical) {
 TEST(ContactDeterminism, TwoThreadsGiveTheSingleThreadedBits) {
     EXPECT_EQ(state_hash(run(2, kSteps)), state_hash(run(1, kSteps)));
 }
+
+// 3 and 4 threads: uneven splits of the 1000 bodies (333 + 333 + 334) and more workers than the
+// machine's 2 cores. Each step hands the workers a few hundred jobs (colours x sweeps x
+// substeps), and with more workers than cores every hand-off waits for the scheduler, so these
+// run a window of the rain rather than the whole of it: 12 steps from step 100, when the bottom
+// layer has landed (t = 0.30 s, step 72) and the layers above pile onto it, continuing one
+// single-threaded state with 1 and with N threads.
+class MoreThreadsThanCores : public ::testing::TestWithParam<int> {};
+
+TEST_P(MoreThreadsThanCores, GiveTheSingleThreadedBits) {
+    constexpr int kFrom = 100, kWindow = 12;
+    Rain r;
+    r.model.contact.parallel_min_bodies = 0;
+    StepWorkspace one(1);
+    for (int k = 0; k < kFrom; ++k) step(r.model, r.state, one);
+    State alone = r.state, shared = r.state;
+    StepWorkspace many(GetParam());
+    for (int k = 0; k < kWindow; ++k) {
+        step(r.model, alone, one);
+        step(r.model, shared, many);
+    }
+    const ContactStats& stats = many.contacts.stats();
+    std::printf("[contacts] last step of the window: %d constraints in %d colours, %d workers\n",
+                stats.constraints, stats.colours, stats.workers);
+    EXPECT_EQ(stats.workers, GetParam());
+    EXPECT_GT(stats.constraints, 500) << "the window holds few contacts";
+    EXPECT_EQ(state_hash(shared), state_hash(alone));
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactDeterminism, MoreThreadsThanCores, ::testing::Values(3, 4),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             return std::to_string(info.param) + "Threads";
+                         });
 
 // Below ContactSettings::parallel_min_bodies dynamic bodies a step runs on one thread (the pool's
 // hand-offs cost more than they save there); at or above it, on the whole pool.

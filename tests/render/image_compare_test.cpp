@@ -141,6 +141,54 @@ TEST(ImageCompare, IsolatedChangeIsNotAntialiasing) {
     EXPECT_EQ(r.antialiased, 0);
 }
 
+// A blob of 9 touching pixels (a small object missing) and 9 scattered single pixels (noise) are
+// the same count; only the blob makes a cluster, and the cluster bound tells them apart.
+TEST(ImageCompare, ClusterBoundFailsABlobThatScatteredNoiseOfTheSameCountPasses) {
+    const Image a = filled(60, 40, 230, 230, 230);
+    Image blob = a, speckle = a;
+    for (int y = 20; y < 23; ++y)
+        for (int x = 30; x < 33; ++x) set(blob, x, y, 40, 60, 200);
+    for (int k = 0; k < 9; ++k) set(speckle, 3 + 6 * k, 5 + 3 * (k % 3), 40, 60, 200);
+    CompareOptions options;
+    options.max_different = 40; // the count alone passes both
+    EXPECT_TRUE(compare_images(a, blob, options).matches);
+    options.max_cluster = 4;
+    const CompareResult b = compare_images(a, blob, options);
+    EXPECT_EQ(b.different, 9);
+    EXPECT_EQ(b.largest_cluster, 9);
+    EXPECT_EQ(b.cluster_box.x, 30);
+    EXPECT_EQ(b.cluster_box.y, 20);
+    EXPECT_EQ(b.cluster_box.width, 3);
+    EXPECT_EQ(b.cluster_box.height, 3);
+    EXPECT_FALSE(b.matches);
+    EXPECT_NE(b.summary.find("largest cluster 9 pixels (allowed 4) in the 3x3 box at (30, 20)"),
+              std::string::npos)
+        << b.summary;
+    const CompareResult s = compare_images(a, speckle, options);
+    EXPECT_EQ(s.different, 9);
+    EXPECT_EQ(s.largest_cluster, 1);
+    EXPECT_TRUE(s.matches);
+    options.max_cluster = 8;
+    EXPECT_FALSE(compare_images(a, blob, options).matches);
+    options.max_cluster = 9;
+    EXPECT_TRUE(compare_images(a, blob, options).matches);
+}
+
+// Pixels touching at a corner belong to one cluster (8-connectivity): a thin diagonal line is
+// one object, not a scatter.
+TEST(ImageCompare, ClustersJoinAtCorners) {
+    const Image a = filled(20, 20, 230, 230, 230);
+    Image line = a;
+    for (int k = 0; k < 6; ++k) set(line, 4 + k, 3 + k, 0, 0, 0);
+    set(line, 15, 15, 0, 0, 0); // apart
+    const CompareResult r = compare_images(a, line);
+    EXPECT_EQ(r.different, 7);
+    EXPECT_EQ(r.largest_cluster, 6);
+    EXPECT_EQ(r.cluster_box.width, 6);
+    EXPECT_EQ(r.cluster_box.height, 6);
+    EXPECT_EQ(compare_images(a, a).largest_cluster, 0);
+}
+
 TEST(ImageCompare, PerceptualThresholdIgnoresFaintChanges) {
     const Image a = filled(10, 10, 100, 100, 100);
     Image b = a;

@@ -14,8 +14,13 @@
 //   - none of those rays meets another drawn body (whose shadow would darken Q anyway).
 // Bodies with too few such pixels in the whole frame (their shadows fall on or among other
 // bodies: stacks, the sphere-rain block) are drawn again in groups whose shadows lie apart,
-// alone with the ground. The light's frustum is then fitted to the group, not to the frame, but
-// whether a caster is kept does not depend on the others.
+// alone with the ground, and those still short of pixels (another of the group stands between
+// the camera and the shadow) alone. The light's frustum is then fitted to the group, not to the
+// frame, but whether a caster is kept does not depend on the others.
+// Every dynamic body whose shadow falls in view is judged: one whose shadow, cast with the body
+// alone on the ground, covers at least kMinPixels ground pixels the camera sees past the body
+// (by the rays above, without the renderer). A body left out is one whose shadow is out of the
+// picture, in the ground's fading rim, or hidden behind the body itself; the count says so.
 #include "app/run/auto_camera.h"
 #include "app/run/simulation.h"
 #include "app/scene/scene.h"
@@ -105,6 +110,8 @@ Frame frame_zero(const std::string& name) {
 struct GroundPixel {
     const Ground* ground = nullptr;
     glm::dvec3 q{0.0};
+    glm::dvec3 dir{0.0}; // unit, from the eye; q = eye + t dir
+    double t = 0.0;
 };
 
 std::vector<GroundPixel> ground_pixels(const Frame& f) {
@@ -127,7 +134,7 @@ std::vector<GroundPixel> ground_pixels(const Frame& f) {
                 if (t > 0.0 && t < nearest &&
                     std::max(std::abs(lx), std::abs(ly)) < 0.8 * g.half_extent) {
                     nearest = t;
-                    out[std::size_t(y * kWidth + x)] = {&g, p + g.point};
+                    out[std::size_t(y * kWidth + x)] = {&g, p + g.point, dir, t};
                 }
             }
         }
@@ -175,6 +182,28 @@ bool in_no_shadow_of(const BodyShape& b, const std::array<glm::dvec3, 9>& points
     for (const glm::dvec3& p : points)
         if (render::test::blocks(b, p, to_light)) return false;
     return true;
+}
+
+// Ground pixels in each caster's shadow that the camera sees past the caster itself, the caster
+// alone on the ground: whether its shadow falls in view, from the rays alone.
+std::vector<int> shadow_pixels_in_view(const Frame& f, const std::vector<GroundPixel>& pixels) {
+    std::vector<int> count(f.casters.size(), 0);
+    const glm::dvec3 eye(f.view.camera.position);
+    for (std::size_t i = 0; i < f.casters.size(); ++i) {
+        if (!f.dynamic[i]) continue;
+        const BodyShape& b = f.casters[i];
+        std::vector<std::pair<glm::dvec3, double>> circles; // on each ground
+        for (const Ground& g : f.grounds) circles.push_back(shadow_circle(b, g, f.to_light));
+        for (const GroundPixel& p : pixels) {
+            if (!p.ground) continue;
+            const auto [centre, radius] = circles[std::size_t(p.ground - f.grounds.data())];
+            const glm::dvec3 d = p.q - centre;
+            if (glm::dot(d, d) > radius * radius) continue;
+            if (render::test::ray_entry(b, eye, p.dir) < p.t) continue; // the body hides it
+            count[i] += deep_in_shadow(b, around(p, b), f.to_light);
+        }
+    }
+    return count;
 }
 
 double luma(const render::Image& img, std::size_t pixel) {
@@ -293,35 +322,48 @@ TEST_P(EveryBodyCastsAShadow, GroundUnderEachBodyDarkensWithShadowsOn) {
     std::string file = name; // lessons/top -> lessons_top
     std::replace(file.begin(), file.end(), '/', '_');
     const std::string saved = std::string(TUMBLE_TEST_ARTIFACTS) + "/body_shadows_" + file;
+    const std::vector<int> in_view = shadow_pixels_in_view(f, pixels);
     std::vector<Tally> tally = judge(f, all, pixels, r, saved);
     for (std::size_t i : dynamic)
-        if (tally[i].pixels < kMinPixels) again.push_back(i);
+        if (tally[i].pixels < kMinPixels && in_view[i] >= kMinPixels) again.push_back(i);
     const std::vector<std::vector<std::size_t>> groups = apart(f, again);
     for (const std::vector<std::size_t>& g : groups) {
         const std::vector<Tally> t = judge(f, g, pixels, r);
         for (std::size_t a = 0; a < g.size(); ++a) tally[g[a]] = t[a];
     }
+    std::size_t alone = 0;
+    for (std::size_t i : again)
+        if (tally[i].pixels < kMinPixels) tally[i] = judge(f, {i}, pixels, r)[0], ++alone;
 
-    int judged = 0;
+    int judged = 0, shadows_in_view = 0;
     double least = 1.0;
     for (std::size_t i : dynamic) {
-        if (tally[i].pixels < kMinPixels) continue; // too little of its shadow in the picture
+        const std::string body = "body " + std::to_string(f.body[i]) + " \"" +
+                                 f.scene.looks[std::size_t(f.body[i])].name + "\"";
+        shadows_in_view += in_view[i] >= kMinPixels;
+        if (in_view[i] >= kMinPixels) {
+            EXPECT_GE(tally[i].pixels, kMinPixels)
+                << body << ": " << in_view[i] << " ground pixels in view lie in its shadow, but "
+                << tally[i].pixels << " could be judged even drawn alone";
+        }
+        if (tally[i].pixels < kMinPixels) continue; // its shadow is not in the picture
         ++judged;
         const double darkening = tally[i].darkening();
         least = std::min(least, darkening);
         EXPECT_GE(darkening, kMinDarkening)
-            << "body " << f.body[i] << " \"" << f.scene.looks[std::size_t(f.body[i])].name
-            << "\" casts no shadow: the ground it shades is " << darkening
+            << body << " casts no shadow: the ground it shades is " << darkening
             << " darker with shadows on, over " << tally[i].pixels << " pixels";
         if (dynamic.size() <= 30 || darkening < kMinDarkening)
             std::printf("[shadow] %s, %s: darkening %.3f over %d pixels\n", name.c_str(),
-                        f.scene.looks[std::size_t(f.body[i])].name.c_str(), darkening,
-                        tally[i].pixels);
+                        body.c_str(), darkening, tally[i].pixels);
     }
-    std::printf("[shadow] %s: %d of %zu dynamic bodies judged (%zu drawn again in %zu groups "
-                "apart); the others show too little of their shadow\n",
-                name.c_str(), judged, dynamic.size(), again.size(), groups.size());
+    std::printf("[shadow] %s: %d of %zu dynamic bodies judged, of %d whose shadow falls in view "
+                "(%zu drawn again in %zu groups apart, %zu of them alone); the others' shadows "
+                "are out of the picture or behind the body\n",
+                name.c_str(), judged, dynamic.size(), shadows_in_view, again.size(), groups.size(),
+                alone);
     TUMBLE_MEASURED(least, kMinDarkening);
+    EXPECT_GE(judged, shadows_in_view);
     EXPECT_GE(judged, 1) << "no body's shadow could be judged in this scene";
 }
 
