@@ -2,7 +2,7 @@
 // WebM and GIF that `tumble render` writes are decoded here (decoded_video.h: libavcodec, and
 // libswscale with the stream's colour tags, as a player does) and every decoded picture is matched
 // against every frame of the run, drawn independently of the pipeline and its sinks: each frame k
-// a still of its own (app/run/still.h: a fresh simulation stepped to t = k / fps, one renderer).
+// a still of its own (still() below: a fresh prepared run stepped to t = k / fps, one renderer).
 //
 // A decoded picture D_i must be nearest (by mean squared error over the RGB values) to its own
 // frame P_own, and by a clear margin. For a lossy codec, D_i = P_own + n with coding noise n, and
@@ -21,8 +21,10 @@
 // and plays at 30 fps.
 #include "app/cli_runner.h"
 #include "app/decoded_video.h"
+#include "app/run/auto_camera.h"
+#include "app/run/frame_source.h"
+#include "app/run/prepare_run.h"
 #include "app/run/render_frames.h"
-#include "app/run/still.h"
 #include "app/scene/scene.h"
 #include "measured.h"
 #include "render/png_io.h"
@@ -56,6 +58,19 @@ struct Bounds {
     double seconds; // largest |presentation time - frame time|
 };
 
+// Frame k alone: a fresh run (app/run/prepare_run.h) stepped to t = k / fps and drawn, without
+// the pipeline or a sink.
+render::Image still(const app::Scene& given, int k, render::Renderer& renderer) {
+    app::PreparedRun run = app::prepare_run(given);
+    app::frame_automatically(run.scene, run.timeline);
+    app::FrameSource source(run.scene, run.timeline, run.sim, k, k);
+    render::SceneView view;
+    source.next(view);
+    render::Image image;
+    renderer.draw(view, image);
+    return image;
+}
+
 // Frame k of the run at t = k / fps, each drawn on its own, outside the pipeline.
 const std::vector<render::Image>& rendered_frames() {
     static const std::vector<render::Image> frames = [] {
@@ -64,7 +79,7 @@ const std::vector<render::Image>& rendered_frames() {
         scene.duration = double(kFrames) / kFps;
         render::Renderer renderer(app::render_options(scene.render));
         std::vector<render::Image> out;
-        for (int k = 0; k < kFrames; ++k) out.push_back(app::render_still(scene, k, renderer));
+        for (int k = 0; k < kFrames; ++k) out.push_back(still(scene, k, renderer));
         return out;
     }();
     return frames;
