@@ -32,7 +32,10 @@ std::string number_text(const py::handle& value) {
 
 std::string joined_numbers(const py::handle& values) {
     std::string out;
-    for (const py::handle v : values) out += (out.empty() ? "" : ",") + number_text(v);
+    for (const py::handle v : values) {
+        if (!out.empty()) out += ',';
+        out += number_text(v);
+    }
     return out;
 }
 
