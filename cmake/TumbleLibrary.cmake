@@ -10,6 +10,37 @@ function(tumble_library target folder)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${folder}/*.cpp)
   add_library(${target} STATIC ${sources} ${ARGN})
   tumble_expose_headers(${target} ${folder})
+  # The Python module's copy (cmake/TumblePython.cmake, app/python/CMakeLists.txt links it).
+  if(TUMBLE_PYTHON AND target IN_LIST TUMBLE_PYTHON_LIBRARIES)
+    add_library(${target}_pic STATIC EXCLUDE_FROM_ALL ${sources} ${ARGN})
+    set_target_properties(${target}_pic PROPERTIES POSITION_INDEPENDENT_CODE ON
+                          CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+    # Its flags and links are the library's, known once the folder's CMakeLists.txt has run.
+    # (EVAL: a deferred call expands its arguments when it runs; the name is needed now.)
+    cmake_language(EVAL CODE "cmake_language(DEFER CALL tumble_pic_copy_usage [[${target}]])")
+  endif()
+endfunction()
+
+# The <target>_pic copy takes <target>'s definitions, options, include folders and links, the
+# libraries among TUMBLE_PYTHON_LIBRARIES replaced by their copies.
+function(tumble_pic_copy_usage target)
+  foreach(property COMPILE_DEFINITIONS COMPILE_OPTIONS INCLUDE_DIRECTORIES
+                   INTERFACE_INCLUDE_DIRECTORIES)
+    get_target_property(value ${target} ${property})
+    if(value)
+      set_property(TARGET ${target}_pic PROPERTY ${property} ${value})
+    endif()
+  endforeach()
+  get_target_property(links ${target} LINK_LIBRARIES)
+  set(pic_links)
+  foreach(link ${links})
+    if(link IN_LIST TUMBLE_PYTHON_LIBRARIES)
+      list(APPEND pic_links ${link}_pic)
+    elseif(link)
+      list(APPEND pic_links ${link})
+    endif()
+  endforeach()
+  target_link_libraries(${target}_pic PUBLIC ${pic_links})
 endfunction()
 
 # tumble_expose_headers(<target> <folder>): the include root described above, for any target.

@@ -28,5 +28,11 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # `tumble study` draws its plots with gnuplot, run as a program (docs/study.md): not a library,
 # so dpkg-shlibdeps cannot see it; recommended, not required.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, fonts-dejavu-core")
+# The Python module (app/python, docs/python.md) goes into Debian's Python path; it needs Debian's
+# Python 3.11 and NumPy at import, which the command line does not: recommended, not required.
+if(TUMBLE_PYTHON)
+  string(APPEND CPACK_DEBIAN_PACKAGE_RECOMMENDS
+         ", python3 (>= ${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}), python3-numpy")
+endif()
 set(CPACK_OUTPUT_FILE_PREFIX ${CMAKE_BINARY_DIR}/package)
 include(CPack)

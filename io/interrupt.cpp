@@ -37,20 +37,26 @@ extern "C" void on_signal(int sig) {
     say(message, sizeof message - 1);
 }
 
+// A host's call: the flag only; the host says what happened once the call returns.
+extern "C" void on_signal_in_host(int sig) {
+    g_signal.store(sig);
+}
+
 } // namespace
 
-InterruptGuard::InterruptGuard() {
+InterruptGuard::InterruptGuard(Mode mode) : mode_(mode) {
     g_signal = 0;
     struct sigaction sa {};
-    sa.sa_handler = on_signal;
+    sa.sa_handler = mode == Mode::command ? on_signal : on_signal_in_host;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &g_old_int);
-    sigaction(SIGTERM, &sa, &g_old_term);
+    if (mode == Mode::command) sigaction(SIGTERM, &sa, &g_old_term);
 }
 
 InterruptGuard::~InterruptGuard() {
     sigaction(SIGINT, &g_old_int, nullptr);
-    sigaction(SIGTERM, &g_old_term, nullptr);
+    if (mode_ == Mode::command) sigaction(SIGTERM, &g_old_term, nullptr);
+    if (mode_ == Mode::host) g_signal = 0; // read by the host before; no later call may see it
 }
 
 bool InterruptGuard::requested() {

@@ -18,8 +18,14 @@ struct Interrupted : std::runtime_error {
 
 class InterruptGuard {
   public:
-    InterruptGuard();  // installs the handlers
-    ~InterruptGuard(); // restores the previous ones
+    // command: SIGINT and SIGTERM as above, for the `tumble` command line. host: SIGINT only, for
+    // a program that embeds Tumble and reports the interruption itself (the Python module raises
+    // KeyboardInterrupt once the call has stopped): every signal just sets the flag, with no
+    // message and no exit on the second, and SIGTERM keeps the host's own handling; the host reads
+    // the flag before the guard goes, which clears it (no later call, on any thread, stops on it).
+    enum class Mode { command, host };
+    explicit InterruptGuard(Mode mode = Mode::command); // clears the flag, installs the handlers
+    ~InterruptGuard();                                  // restores the previous ones
     InterruptGuard(const InterruptGuard&) = delete;
     InterruptGuard& operator=(const InterruptGuard&) = delete;
 
@@ -27,6 +33,9 @@ class InterruptGuard {
     static int signal_number(); // which one (0 if none)
     // Throws Interrupted naming `stage` ("camera.auto's pre-pass") when a signal arrived.
     static void stop_if_requested(const std::string& stage);
+
+  private:
+    Mode mode_;
 };
 
 } // namespace tumble::io

@@ -23,7 +23,7 @@ struct SinkOptions {
     int height = 0; // (every frame must then have the same size)
     int fps = 60;   // frames per second; the container time base is 1/fps
     int crf = 18;   // H.264 constant rate factor (0 lossless .. 51 worst)
-    std::string preset = "medium"; // libx264 preset, ultrafast .. placebo (app/cli/render_setup.h)
+    std::string preset = "medium"; // libx264 preset, ultrafast .. placebo (app/run/render_request.h)
     // libx264 threads. The count is part of the output: x264 records its settings (threads=N)
     // in the stream, and frame threads limit motion search to rows other threads have
     // finished; measured on fast vertical motion, 3 threads (x264's automatic choice on 2

@@ -46,6 +46,13 @@ test_packages=(
   file
   # The benchmark scripts time whole commands (/usr/bin/time) and do their arithmetic with bc.
   time bc
+  # The Python module `tumble` (app/python, README "From Python", docs/python.md): bound with
+  # pybind11 for Debian's /usr/bin/python3 (its headers in python3-dev), arrays from NumPy. The
+  # build makes it when these are installed; the demo does without.
+  pybind11-dev python3-dev python3-numpy
+  # Its tests (tests/python: pytest) and notebooks (examples/notebooks), executed in CTest by
+  # nbclient on an IPython kernel, their plots drawn by matplotlib.
+  python3-pytest python3-matplotlib python3-nbclient python3-nbformat python3-ipykernel
 )
 
 if [ "${1:-}" = "--list" ]; then

@@ -2,9 +2,9 @@
 // re-encoding (app/cluster/video_join.h). The shards may be given in any order; they are checked
 // to belong together before anything is written.
 #include "app/cli/failure.h"
-#include "app/cli/stale_temporaries.h"
 #include "app/cli/subcommand.h"
 #include "app/cluster/video_join.h"
+#include "app/run/stale_temporaries.h"
 
 #include <cstdio>
 #include <memory>

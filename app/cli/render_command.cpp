@@ -175,8 +175,8 @@ int run_render(const RenderCommand& command) {
                            "world.error_estimate) steps a second run at h/2 from t = 0, which a "
                            "checkpoint does not hold; render without --from-checkpoints, or with "
                            "--no-error-estimate");
-    const std::unique_ptr<render::FrameSink> sink =
-        open_render_sink(cmd, scene, output, run_output(cmd, scene, tl, range, output));
+    const std::unique_ptr<render::FrameSink> sink = open_render_sink(
+        cmd, scene, output, run_output(cmd, scene, tl, range, output), cmd.common.quiet);
     // camera.auto: a pre-pass over the run, once the input and the output are known to be good
     // (a bad output name is exit 2 before any stepping).
     frame_automatically(scene, tl, cmd.common.quiet);

@@ -1,91 +1,22 @@
 #pragma once
-// The options of `tumble render` and what the commands that draw (render, render --compare,
-// bench-render) make of them: the scene's picture settings with the command line's overrides,
-// the output's name, and its sink.
+// The options of `tumble render`: the scene's (scene_options.h), the picture's and the output's
+// (app/run/render_request.h: what the Python module's keywords mean too), and those only the
+// command line has (--stats, shards: --frames, --from-checkpoints).
 #include "app/cli/scene_options.h"
-#include "app/run/timeline.h"
-#include "app/scene/scene.h"
-#include "render/frame_sink.h"
+#include "app/run/render_request.h"
 
-#include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace tumble::app {
 
-struct RenderCommand {
+struct RenderCommand : RenderRequest {
     SceneOptions common;
-    std::string output; // empty: "<scene name>.mp4"
-    std::optional<int> width, height, fps;
-    std::optional<std::int64_t> frame; // render only this frame (to a still .png)
-    std::optional<double> time;        // or the frame shown at this time, s (resolve_time)
-    int crf = 18;
-    // Encoder preset; unset: "medium", or "ultrafast" with --preview (video_preset()).
-    std::optional<std::string> preset;
-    // Picture switches; unset ones keep the scene's render settings.
-    bool preview = false; // 640x360 (unless --width/--height), no shadows, AA, AO or reflections
-    std::optional<bool> shadows, soft_shadows, ambient_occlusion, reflections, antialiasing,
-        overlay, axes, vectors;
-    // Teaching overlays; unset ones keep the scene's.
-    std::optional<std::vector<std::string>> chart; // quantity names
-    std::optional<std::string> chart_body, poinsot, overlay_body, trail_axis;
-    std::optional<double> chart_window, trail_seconds;
-    std::optional<bool> trails;
-    bool stats = false;     // print each pipeline stage's rate
-    bool overwrite = false; // a frame folder may hold an earlier run's frames: remove them first
-    // Integrators drawn side by side, each stepping its own copy of the scene (compare_command).
-    std::vector<std::string> compare;
+    bool stats = false; // print each pipeline stage's rate
     // A shard: frames A..B-1 only ("A:B", app/cluster/frame_range.h), continuing from the
     // nearest checkpoint at or before A in `from_checkpoints` when given.
     std::optional<std::string> frames;
     std::string from_checkpoints;
 };
-
-// What a run adds to its sink's options: the frames it draws when it is a shard
-// (SinkOptions::first_frame, end_frame) and the video's tumble-shard tag (app/cluster/shard_tag.h).
-struct RunOutput {
-    std::int64_t first_frame = 0, end_frame = -1;
-    std::string comment;
-};
-
-// --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
-// --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws SceneError.
-void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
-
-// The encoder preset of a run: --preset if given, else "ultrafast" for --preview (a quick look:
-// measured, veryfast encoding made the 640x360 preview 1.58x slower than drawing alone, ultrafast
-// keeps it near the renderer's pace) and "medium" otherwise. Measured (scripts/bench-encoder.sh,
-// bench/results/vm/encoder.csv: 2 s of three built-in scenes at 1280x720, decoded and compared
-// with the lossless frames in RGB): at CRF 18, medium gains 1.0-1.4 dB PSNR over veryfast (SSIM
-// 0.9954-0.9968 against 0.9935-0.9951) for 10-23% more bits, a better trade than veryfast at a
-// lower CRF (CRF 15 veryfast: as good, 12-19% more bits than medium at 18); the 600-frame default
-// demo takes 28.6 s end to end against 25.9 s (1.10x), the renderer being the slow stage.
-std::string video_preset(const RenderCommand& cmd);
-
-// --time T: sets `frame` to the frame shown at t = T, K = round(T fps). Returns a note when T
-// lies between frame times ("t = 1.01 s is between frames at 60 fps: frame 61, t = 1.01667 s"),
-// else "". Throws SceneError for a negative or non-finite T.
-std::string resolve_time(RenderCommand& cmd, const Timeline& tl);
-
-// Throws SceneError when --frame (or --time) names a frame outside the video.
-void check_frame_index(const RenderCommand& cmd, const Timeline& tl);
-
-// --output, or "<scene name><suffix>.mp4" (app/scene/scene.h: scene_name), or for --frame K
-// "<scene name><suffix>_<K, six digits>.png". Throws
-// io::BadInput when the output cannot take this run: --frame writes one still, a .png.
-std::string output_name(const RenderCommand& cmd, const Scene& scene,
-                        const std::string& suffix = "");
-
-// The sink for `output` at the scene's size and frame rate with the command's quality settings,
-// creating the output's folder first (not for a name with a %d pattern). An output that cannot be
-// opened (unknown type, odd size for H.264, a folder that cannot be made) is bad input: throws
-// io::BadInput. Errors while writing later are failed runs (render::SinkError).
-// MP4s get a key frame every two seconds (app/cluster/frame_range.h: key_interval), where the
-// encoder starts afresh, so that a video can be split into shards there.
-std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
-                                                    const std::string& output,
-                                                    const RunOutput& run = {});
 
 } // namespace tumble::app

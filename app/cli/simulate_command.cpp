@@ -5,7 +5,6 @@
 // with or without the CSV, for shards of a render to continue from (docs/cluster.md).
 #include "app/cli/failure.h"
 #include "app/cli/scene_options.h"
-#include "app/cli/stale_temporaries.h"
 #include "app/cli/subcommand.h"
 #include "app/cluster/checkpoint_store.h"
 #include "app/run/accuracy_choice.h"
@@ -13,6 +12,7 @@
 #include "app/run/prepare_run.h"
 #include "app/run/progress.h"
 #include "app/run/run_estimate.h"
+#include "app/run/stale_temporaries.h"
 #include "app/run/trajectory_writer.h"
 #include "io/atomic_file.h"
 #include "io/bad_input.h"

@@ -8,10 +8,6 @@
 
 namespace tumble::app {
 
-int key_interval(int fps) {
-    return 2 * fps;
-}
-
 namespace {
 
 // "--frames 30:90: what was expected" (a SceneError would read "--frames:30:90:" as line:column).

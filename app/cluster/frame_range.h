@@ -2,8 +2,11 @@
 // Frame ranges of a shard: `tumble render --frames A:B` draws frames A to B - 1 of the whole run
 // (half-open, so 0:60 and 60:120 tile the first two seconds at 60 fps), and `tumble shards`
 // splits a run into such ranges. A video shard must start on a key frame of the whole run, one
-// every key_interval() frames, so that its packets are those of a whole render (the encoder
-// restarts there: render/video_sink.h); its end is the next shard's start, or the end of the run.
+// every key_interval() frames (app/run/key_interval.h), so that its packets are those of a whole
+// render (the encoder restarts there: render/video_sink.h); its end is the next shard's start, or
+// the end of the run.
+#include "app/run/key_interval.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,13 +19,6 @@ struct FrameRange {
     std::int64_t size() const { return end - first; }
     std::string text() const { return std::to_string(first) + ":" + std::to_string(end); }
 };
-
-// Frames between key frames in a video: one every two seconds, 2 fps frames, where the encoder
-// starts afresh. The interval trades shard granularity against bits, measured on the default demo
-// at CRF 18 medium (docs/cluster.md, bench/results/vm/keyframes.csv): restarting every 1 s cost
-// 51% more bits than one encoder for the whole 10 s at the same PSNR, every 2 s 13%, every 5 s
-// 9%. Two seconds still let a 10-minute video split into up to 300 shards.
-int key_interval(int fps);
 
 // Parses "A:B" as given to `option`. Throws io::BadInput naming option, text and what was
 // expected unless 0 <= A < B <= frames and A and B are multiples of `key_interval` (B may also be

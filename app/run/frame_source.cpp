@@ -4,6 +4,7 @@
 #include "app/view/view_builder.h"
 #include "physics/step.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -54,6 +55,14 @@ void FrameSource::resume(std::int64_t frame, const physics::State& state) {
                                     std::to_string(first_));
     sim_.state = state;
     k_ = frame;
+}
+
+void FrameSource::skip_to(std::int64_t frame) {
+    if (done_ || frame < std::max(k_, first_) || frame > last_)
+        throw std::invalid_argument("cannot skip to frame " + std::to_string(frame) +
+                                    " from frame " + std::to_string(k_) + " of " +
+                                    std::to_string(first_) + ".." + std::to_string(last_));
+    while (k_ < frame) step_one_frame();
 }
 
 void FrameSource::step_one_frame() {

@@ -41,6 +41,13 @@ class FrameSource {
 
     std::int64_t next_frame() const { return k_; }
 
+    // Steps on to frame `frame` (first, next_frame() <= frame <= last) without describing the
+    // frames between, so that next() gives frame `frame`: a sparse set of frames (the Python
+    // module's render(frames=[0, 60, 120])) costs their pictures only. The teaching overlays still
+    // record every frame, so frame k is the same picture as in a whole video. Throws
+    // std::invalid_argument for a frame outside that range.
+    void skip_to(std::int64_t frame);
+
     // Called by next() with each frame's index and the simulation at that frame's time, before
     // it steps on: for callers that sample states at frame times (a regression suite's state
     // checks) in the same pass that draws the frames.

@@ -7,6 +7,7 @@
 #include <malloc.h>
 
 #include <cstdio>
+#include <functional>
 
 namespace tumble::app {
 
@@ -32,21 +33,22 @@ void tune_allocator_for_rendering() {
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
-RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
-                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet,
-                        const ResumePoint* resume) {
+namespace {
+
+// Frames from `source` through the pipeline into `sink`; `next` fills the next frame's view (false
+// when there are none left). Stops early, finishing the frames in flight, on Ctrl-C.
+RunResult run_frames(const Scene& scene, std::int64_t count, render::FrameSink& sink, bool quiet,
+                     const std::function<bool(render::SceneView&)>& next) {
     tune_allocator_for_rendering();
     RunResult out;
-    FrameSource source(scene, tl, sim, first, last);
-    if (resume) source.resume(resume->frame, resume->state);
-    Progress progress("rendering", last - first + 1, quiet);
+    Progress progress("rendering", count, quiet);
     PipelineStages stages;
     stages.produce = [&](render::SceneView& view) {
         if (io::InterruptGuard::requested()) {
             out.interrupted = true;
             return false;
         }
-        return source.next(view);
+        return next(view);
     };
     const render::RenderOptions options = render_options(scene.render);
     stages.make_renderer = [options] { return std::make_unique<render::Renderer>(options); };
@@ -58,6 +60,30 @@ RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
     out.stats = run_pipeline(stages);
     progress.finish();
     return out;
+}
+
+} // namespace
+
+RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
+                        render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet,
+                        const ResumePoint* resume) {
+    FrameSource source(scene, tl, sim, first, last);
+    if (resume) source.resume(resume->frame, resume->state);
+    return run_frames(scene, last - first + 1, sink, quiet,
+                      [&](render::SceneView& view) { return source.next(view); });
+}
+
+RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
+                        render::FrameSink& sink, std::span<const std::int64_t> frames, bool quiet) {
+    if (frames.empty()) return {};
+    FrameSource source(scene, tl, sim, frames.front(), frames.back());
+    std::size_t at = 0;
+    return run_frames(scene, std::int64_t(frames.size()), sink, quiet,
+                      [&](render::SceneView& view) {
+                          if (at == frames.size()) return false;
+                          source.skip_to(frames[at++]);
+                          return source.next(view);
+                      });
 }
 
 std::string describe_stats(const PipelineStats& s) {

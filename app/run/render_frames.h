@@ -9,6 +9,7 @@
 #include "render/renderer.h"
 
 #include <cstdint>
+#include <span>
 
 namespace tumble::app {
 
@@ -34,6 +35,12 @@ struct ResumePoint {
 RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
                         render::FrameSink& sink, std::int64_t first, std::int64_t last, bool quiet,
                         const ResumePoint* resume = nullptr);
+
+// The same for some frames only: `frames` sorted and distinct, each in [0, tl.frames). Each is
+// drawn once; the steps between are taken without drawing (FrameSource::skip_to), so frame k is
+// the picture `tumble render --frame k` draws. The Python module's render(frames=[...]).
+RunResult render_frames(const Scene& scene, const Timeline& tl, Simulation& sim,
+                        render::FrameSink& sink, std::span<const std::int64_t> frames, bool quiet);
 
 // Process-wide malloc settings that spare llvmpipe a page fault storm every frame (see the .cpp).
 // render_frames() calls it; other long rendering loops may too.

@@ -89,14 +89,22 @@ std::vector<std::string> estimate_summary(const Simulation& sim) {
 }
 
 std::string estimate_csv_header(const physics::ErrorEstimator& e) {
+    return estimate_csv_header(e.bodies());
+}
+
+void print_estimate_csv(std::FILE* out, const physics::ErrorEstimator& e) {
+    print_estimate_csv(out, e.bodies());
+}
+
+std::string estimate_csv_header(std::span<const physics::BodyEstimate> bodies) {
     std::string out;
-    for (const physics::BodyEstimate& b : e.bodies())
+    for (const physics::BodyEstimate& b : bodies)
         out += format(",err_rad_%d,err_m_%d", b.body, b.body);
     return out;
 }
 
-void print_estimate_csv(std::FILE* out, const physics::ErrorEstimator& e) {
-    for (const physics::BodyEstimate& b : e.bodies()) {
+void print_estimate_csv(std::FILE* out, std::span<const physics::BodyEstimate> bodies) {
+    for (const physics::BodyEstimate& b : bodies) {
         if (b.holds())
             std::fprintf(out, ",%.17g,%.17g", b.at.rotation, b.at.position);
         else

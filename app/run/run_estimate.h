@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ std::vector<std::string> estimate_summary(const Simulation& sim);
 // values (empty once a body's estimate no longer holds).
 std::string estimate_csv_header(const physics::ErrorEstimator& e);
 void print_estimate_csv(std::FILE* out, const physics::ErrorEstimator& e);
+// The same for estimates kept earlier (one per dynamic body, as ErrorEstimator::bodies()).
+std::string estimate_csv_header(std::span<const physics::BodyEstimate> bodies);
+void print_estimate_csv(std::FILE* out, std::span<const physics::BodyEstimate> bodies);
 
 // What the overlay shows (app/view/overlay_text.h): the largest estimate over the bodies that hold
 // (only `body` when >= 0), and how many no longer hold.

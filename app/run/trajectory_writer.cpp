@@ -45,7 +45,21 @@ std::string interrupted_path_for(const std::string& path) {
 TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
                                    const std::string& diagnostics_path, const Scene& scene,
                                    const physics::ErrorEstimator* estimate)
-    : scene_(scene), estimate_(estimate), states_(states_path) {
+    : TrajectoryWriter(states_path, diagnostics_path, scene, estimate,
+                       estimate ? estimate_csv_header(*estimate) : "", 0) {}
+
+TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
+                                   const std::string& diagnostics_path, const Scene& scene,
+                                   std::span<const physics::BodyEstimate> estimate_columns)
+    : TrajectoryWriter(states_path, diagnostics_path, scene, nullptr,
+                       estimate_csv_header(estimate_columns), estimate_columns.size()) {}
+
+TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
+                                   const std::string& diagnostics_path, const Scene& scene,
+                                   const physics::ErrorEstimator* estimate,
+                                   const std::string& estimate_header, std::size_t estimate_columns)
+    : scene_(scene), estimate_(estimate), estimate_columns_(estimate_columns),
+      states_(states_path) {
     if (!diagnostics_path.empty()) diags_.emplace(diagnostics_path);
     // A run cut short: "s.interrupted.csv" and, beside it, "s.interrupted.diagnostics.csv"
     // (or "d.interrupted.csv" for diagnostics the user named d.csv).
@@ -56,8 +70,7 @@ TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
     std::fprintf(states_file_, "%s\n", kStatesHeader);
     if (diags_) {
         diags_file_ = open_or_throw(*diags_);
-        std::fprintf(diags_file_, "%s%s\n", kDiagnosticsHeader,
-                     estimate_ ? estimate_csv_header(*estimate_).c_str() : "");
+        std::fprintf(diags_file_, "%s%s\n", kDiagnosticsHeader, estimate_header.c_str());
     }
 }
 
@@ -84,9 +97,20 @@ void TrajectoryWriter::write(const physics::Model& m, const physics::State& s) {
 }
 
 void TrajectoryWriter::write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics) {
-    if (estimate_) throw std::logic_error("rows made earlier carry no error estimate");
+    write(rows, diagnostics, {});
+}
+
+void TrajectoryWriter::write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics,
+                             std::span<const physics::BodyEstimate> estimate) {
+    if (estimate_) throw std::logic_error("rows made earlier carry no live error estimate");
+    if (estimate.size() != estimate_columns_)
+        throw std::logic_error("an estimate of " + std::to_string(estimate.size()) +
+                               " bodies for " + std::to_string(estimate_columns_) + " columns");
     for (const StateRow& r : rows) print_row(states_file_, r);
-    if (diags_file_) print_row(diags_file_, diagnostics);
+    if (!diags_file_) return;
+    print_fields(diags_file_, diagnostics);
+    print_estimate_csv(diags_file_, estimate);
+    std::fputc('\n', diags_file_);
 }
 
 std::vector<std::string> TrajectoryWriter::close_and_commit(bool interrupted) {

@@ -23,6 +23,7 @@
 
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,10 +35,17 @@ class TrajectoryWriter {
     // carry its columns, as it stands when write(model, state) is called (at the state's step).
     TrajectoryWriter(const std::string& states_path, const std::string& diagnostics_path,
                      const Scene& scene, const physics::ErrorEstimator* estimate = nullptr);
+    // For rows made earlier with an error estimate (the Python module's Trajectory.write_csv):
+    // the diagnostics carry the columns of the bodies of `estimate_columns` (BodyEstimate::body),
+    // and write(rows, diagnostics, estimate) gives each row's values.
+    TrajectoryWriter(const std::string& states_path, const std::string& diagnostics_path,
+                     const Scene& scene, std::span<const physics::BodyEstimate> estimate_columns);
     ~TrajectoryWriter();
     void write(const physics::Model& model, const physics::State& state);
     // Rows made earlier (app/run/trajectory_rows.h), e.g. only some bodies at sampled times.
     void write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics);
+    void write(const std::vector<StateRow>& rows, const DiagnosticsRow& diagnostics,
+               std::span<const physics::BodyEstimate> estimate);
     // Closes both files and renames them into place; returns the paths written.
     std::vector<std::string> finish();
     // The same for a run that stopped early: into interrupted_path_for(...) names, leaving files
@@ -45,9 +53,13 @@ class TrajectoryWriter {
     std::vector<std::string> finish_interrupted();
 
   private:
+    TrajectoryWriter(const std::string& states_path, const std::string& diagnostics_path,
+                     const Scene& scene, const physics::ErrorEstimator* estimate,
+                     const std::string& estimate_header, std::size_t estimate_columns);
     std::vector<std::string> close_and_commit(bool interrupted);
     const Scene& scene_;
     const physics::ErrorEstimator* estimate_;
+    std::size_t estimate_columns_; // bodies of an estimate given with the rows (0: none)
     io::AtomicFile states_;
     std::optional<io::AtomicFile> diags_;
     std::string interrupted_diagnostics_; // where finish_interrupted() puts the diagnostics

@@ -38,4 +38,14 @@ for lib in $(objdump -p "$work/usr/bin/tumble" | awk '/NEEDED/ {print $2}'); do
   count=$((count + 1))
 done
 [ "$count" -ge 8 ] || fail "only $count NEEDED libraries found: the check would prove little"
+# The Python module, when the build made it: installed into Debian's Python path, and importable
+# from there by Debian's Python (nothing of the build tree on its path).
+module=usr/lib/python3/dist-packages/tumble
+if [ -e "$work/$module/__init__.py" ]; then
+  [ -e "$work/$module/_tumble.pyi" ] || fail "the package does not install /$module/_tumble.pyi"
+  rows=$(cd "$work" && PYTHONPATH="$work/usr/lib/python3/dist-packages" /usr/bin/python3 -c \
+    'import tumble; print(len(tumble.simulate("default", duration=0.5)))')
+  [ "$rows" = 121 ] || fail "the installed module simulated $rows rows, not 121"
+  echo "the installed module imports and simulates ($rows rows)"
+fi
 echo "PASS: $count linked libraries, each from a package in Depends"

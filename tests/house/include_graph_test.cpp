@@ -46,7 +46,10 @@ const std::vector<Room> kRooms = {
     {"app/plot",
      {"app/plot/", "app/run/", "app/scene/", "app/gnuplot/", "physics/", "io/"},
      {"physics/exact/"}},
-    {"app/cli", {"app/", "physics/", "render/", "io/"}, {}},
+    {"app/python",
+     {"app/python/", "app/run/", "app/view/", "app/scene/", "physics/", "render/", "io/"},
+     {"physics/exact/"}},
+    {"app/cli", {"app/", "physics/", "render/", "io/"}, {"app/python/"}},
     {"tests", {""}, {"bench/"}},
     {"bench", {""}, {"tests/", "app/"}},
 };

@@ -462,6 +462,8 @@ def main():
         found.append((name, path, where))
 
     locals_py = {os.path.splitext(os.path.basename(f))[0] for f in tree if f.endswith(".py")}
+    # The repository's own packages (app/python/tumble: the module the build makes) are not Debian's.
+    locals_py |= {os.path.basename(os.path.dirname(f)) for f in tree if f.endswith("/__init__.py")}
     for module in sorted(set().union(*(python_imports(t) for _, t in pythons)) - locals_py):
         where = {f for f, t in pythons if module in python_imports(t)}
         r = run(["/usr/bin/python3", "-c", "import %s as m; print(getattr(m, '__file__', '') or '')" % module])

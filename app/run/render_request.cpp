@@ -1,8 +1,7 @@
-#include "app/cli/render_setup.h"
+#include "app/run/render_request.h"
 
-#include "app/cli/stale_temporaries.h"
-
-#include "app/cluster/frame_range.h"
+#include "app/run/key_interval.h"
+#include "app/run/stale_temporaries.h"
 #include "app/scene/scene_error.h"
 #include "io/bad_input.h"
 #include "render/open_sink.h"
@@ -17,7 +16,7 @@ namespace tumble::app {
 namespace {
 
 // --chart, --chart-body, --chart-window, --trails, --trail-axis, --poinsot, --overlay-body.
-void apply_teaching_overrides(const RenderCommand& cmd, Scene& scene) {
+void apply_teaching_overrides(const RenderRequest& cmd, Scene& scene) {
     RenderSettings& rs = scene.render;
     if (cmd.chart) {
         rs.chart.clear();
@@ -48,7 +47,7 @@ void apply_teaching_overrides(const RenderCommand& cmd, Scene& scene) {
 
 } // namespace
 
-void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
+void apply_render_overrides(const RenderRequest& cmd, Scene& scene) {
     RenderSettings& rs = scene.render;
     if (cmd.preview) { // a quick look: small, no shadows, no anti-aliasing, no extras
         rs.width = 640;
@@ -79,7 +78,7 @@ void apply_render_overrides(const RenderCommand& cmd, Scene& scene) {
     if (rs.fps < 1) throw SceneError("--fps", std::to_string(rs.fps), "expected at least 1");
 }
 
-std::string resolve_time(RenderCommand& cmd, const Timeline& tl) {
+std::string resolve_time(RenderRequest& cmd, const Timeline& tl) {
     if (!cmd.time) return "";
     const double t = *cmd.time;
     const double last = tl.frame_time(tl.frames - 1);
@@ -99,13 +98,13 @@ std::string resolve_time(RenderCommand& cmd, const Timeline& tl) {
     return note;
 }
 
-void check_frame_index(const RenderCommand& cmd, const Timeline& tl) {
+void check_frame_index(const RenderRequest& cmd, const Timeline& tl) {
     if (cmd.frame && (*cmd.frame < 0 || *cmd.frame >= tl.frames))
         throw SceneError("--frame", std::to_string(*cmd.frame),
                          "expected a frame index in [0, " + std::to_string(tl.frames - 1) + "]");
 }
 
-std::string output_name(const RenderCommand& cmd, const Scene& scene, const std::string& suffix) {
+std::string output_name(const RenderRequest& cmd, const Scene& scene, const std::string& suffix) {
     std::string output = cmd.output;
     if (output.empty() && cmd.frame) { // a still: "default_000120.png"
         char number[32];
@@ -119,9 +118,9 @@ std::string output_name(const RenderCommand& cmd, const Scene& scene, const std:
     return output;
 }
 
-std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, const Scene& scene,
-                                                    const std::string& output,
-                                                    const RunOutput& run) {
+std::unique_ptr<render::FrameSink> open_render_sink(const RenderRequest& cmd, const Scene& scene,
+                                                    const std::string& output, const RunOutput& run,
+                                                    bool quiet) {
     // The folders above the output. A PNG sequence's own folder ("frames/") is left to the sink,
     // which creates it and removes it again if the run fails before a frame is kept.
     auto parent = std::filesystem::path(output).parent_path();
@@ -143,7 +142,7 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
     options.first_frame = run.first_frame;
     options.end_frame = run.end_frame;
     options.comment = run.comment;
-    remove_stale_temporaries_for(output, cmd.common.quiet);
+    remove_stale_temporaries_for(output, quiet);
     try {
         return render::open_sink(output, options);
     } catch (const render::SinkError& e) {
@@ -151,7 +150,7 @@ std::unique_ptr<render::FrameSink> open_render_sink(const RenderCommand& cmd, co
     }
 }
 
-std::string video_preset(const RenderCommand& cmd) {
+std::string video_preset(const RenderRequest& cmd) {
     if (cmd.preset) return *cmd.preset;
     return cmd.preview ? "ultrafast" : "medium";
 }

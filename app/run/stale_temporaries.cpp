@@ -1,4 +1,4 @@
-#include "app/cli/stale_temporaries.h"
+#include "app/run/stale_temporaries.h"
 
 #include "io/temporary_files.h"
 #include "render/png_sink.h"
