@@ -52,6 +52,7 @@ void print_summary(const SideBySide& tiles, const render::FrameSink& sink, std::
     std::fprintf(stderr, "tumble: wrote %s (%lld frames, %d x %d tiles of %dx%d)\n",
                  sink.describe().c_str(), static_cast<long long>(written), tiles.cols(),
                  tiles.rows(), tiles.tile_width(), tiles.tile_height());
+    if (!sink.note().empty()) std::fprintf(stderr, "tumble: note: %s\n", sink.note().c_str());
 }
 
 } // namespace

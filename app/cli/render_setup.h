@@ -31,6 +31,9 @@ struct RenderCommand {
     // Teaching overlays; unset ones keep the scene's.
     std::optional<std::vector<std::string>> chart; // quantity names
     std::optional<std::string> chart_body, poinsot, overlay_body, trail_axis;
+    // --camera POSITION:TARGET[:FOV], auto or poinsot (app/scene/camera_rig.h:
+    // read_camera_option); unset: the scene's, or the construction's with --poinsot.
+    std::optional<std::string> camera;
     std::optional<double> chart_window, trail_seconds;
     std::optional<bool> trails;
     bool stats = false;     // print each pipeline stage's rate
@@ -50,8 +53,9 @@ struct RunOutput {
     std::string comment;
 };
 
-// --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
-// --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws SceneError.
+// --width/--height/--fps, --camera and the picture switches (--preview, --[no-]shadows,
+// --[no-]aa, --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws
+// SceneError.
 void apply_render_overrides(const RenderCommand& cmd, Scene& scene);
 
 // The encoder preset of a run: --preset if given, else "ultrafast" for --preview (a quick look:

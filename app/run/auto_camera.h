@@ -19,8 +19,10 @@ render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::
                          const glm::dvec3& up, double fov_y_deg, double aspect, double margin);
 
 // If scene.render.camera is automatic, runs the pre-pass over the timeline's frames and turns it
-// into the fixed camera frame_box() gives. Throws what stepping throws (a divergence names its
-// body and step, as the render itself would).
+// into the fixed camera frame_box() gives; if it frames Poinsot's construction (Mode::Poinsot),
+// into the camera that looks down on the invariable plane at t = 0 with the construction in
+// frame (app/view/poinsot.h: poinsot_framing). Throws what stepping throws (a divergence names
+// its body and step, as the render itself would).
 void frame_automatically(Scene& scene, const Timeline& tl);
 
 } // namespace tumble::app
