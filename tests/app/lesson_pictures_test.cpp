@@ -1,6 +1,6 @@
 // Issue 30, item 5: the lessons' pictures show their point. Lesson 1: at t = 4.5 s the spinning
-// plate's L arrow is seen beside its w arrow (not hidden in it), in a colour apart from the
-// plate's, its axes' and its trail's. Lesson 5: the trail of the top's axis hangs from the axis,
+// plate's L arrow is seen beside its w arrow (not hidden in it), both tips in the frame of the
+// lesson's camera, in a colour apart from the plate's, its axes' and its trail's. Lesson 5: the trail of the top's axis hangs from the axis,
 // drawn out to the trail's newest point, without --axes. Measured in pixels and in the world
 // from what the physics says L is, not from the arrows' own code.
 #include "app/cli/render_setup.h"
@@ -10,6 +10,7 @@
 #include "app/run/timeline.h"
 #include "measured.h"
 #include "physics/diagnostics.h"
+#include "render/camera.h"
 #include "render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -97,6 +98,20 @@ TEST(LessonPictures, LessonOnesLArrowIsSeenBesideW) {
         (along_l ? only_l : without_l).instances.push_back(in);
     }
     ASSERT_GT(only_l.instances.size(), 0u) << "no arrow along L";
+    // Both arrows' tips (each head's apex, z = 1 of the unit cone) inside the frame: an arrow
+    // whose head is cut off by the frame's edge does not say where it points.
+    const glm::mat4 vp = render::projection_matrix(f.view.camera, 640.0f / 360.0f) *
+                         render::view_matrix(f.view.camera);
+    int heads = 0;
+    for (const render::Instance& in : f.view.instances) {
+        if (in.body >= 0 || in.mesh != render::MeshKind::Custom) continue;
+        const glm::vec4 c = vp * (in.transform * glm::vec4(0, 0, 1, 1));
+        const glm::vec2 ndc = glm::vec2(c) / c.w;
+        EXPECT_TRUE(c.w > 0 && std::abs(ndc.x) < 0.98f && std::abs(ndc.y) < 0.98f)
+            << "an arrow's tip at " << ndc.x << ", " << ndc.y << " (NDC) is not in the frame";
+        ++heads;
+    }
+    EXPECT_EQ(heads, 2); // w's and L's
     render::RenderOptions o;
     o.width = 640, o.height = 360;
     render::Renderer renderer(o);
