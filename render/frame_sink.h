@@ -70,6 +70,9 @@ class FrameSink {
     virtual void abort() noexcept = 0;
     // Final path(s) for messages, e.g. "out/default.mp4" or "frames/%06d.png".
     virtual std::string describe() const = 0;
+    // What the output keeps differently from the frames it was given, for the run's summary
+    // (a GIF above 50 fps keeps every n-th frame); "" when it keeps them all as they are.
+    virtual std::string note() const { return ""; }
     virtual std::int64_t frames_written() const = 0;
 };
 

@@ -109,6 +109,19 @@ GifSink::~GifSink() {
     abort();
 }
 
+std::string GifSink::note() const {
+    if (stride_ == 1) return "";
+    const int fps = options_.fps;
+    return describe() + " plays at " + std::to_string(fps / stride_) + " fps, every " +
+           std::to_string(stride_) +
+           (stride_ == 2   ? "nd"
+            : stride_ == 3 ? "rd"
+                           : "th") +
+           " frame of " + std::to_string(fps) +
+           " fps (GIF frame delays are whole centiseconds, and browsers slow down those under "
+           "2 cs); --fps 50 or less keeps every frame";
+}
+
 void GifSink::write(const Image& image) {
     detail::check_open(*this, done_);
     if (image.width != options_.width || image.height != options_.height)

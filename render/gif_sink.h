@@ -28,6 +28,7 @@ class GifSink final : public FrameSink {
     void finish() override;
     void abort() noexcept override;
     std::string describe() const override { return file_.final_path().string(); }
+    std::string note() const override; // the frame rate it plays at, when it is not the run's
     std::int64_t frames_written() const override { return frames_; }
 
     // Frames kept of every `stride` written, and the GIF's frame rate (fps / stride).

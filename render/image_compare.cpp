@@ -133,10 +133,19 @@ std::string cluster_text(const CompareResult& r, const CompareOptions& o) {
 }
 
 std::string summarize(const CompareResult& r, const CompareOptions& o) {
-    if (r.identical) {
-        return "identical (max channel delta " + std::to_string(r.max_channel_delta) +
-               ", tolerance " + std::to_string(o.tolerance) + ")";
-    }
+    if (r.identical && r.max_channel_delta == 0) return "identical, bit for bit";
+    if (r.identical)
+        return "identical within the tolerance: every pixel within " + std::to_string(o.tolerance) +
+               " levels or too faint to see; largest channel difference " +
+               std::to_string(r.max_channel_delta) + " of 255";
+    // A match that is not identical: worded so that it does not read as a failure ("0 pixels
+    // differ ... max channel delta 24" seemed to contradict itself).
+    if (r.matches)
+        return "matches, not bit-identical: " + std::to_string(r.different) + " pixels differ (" +
+               std::to_string(o.max_different) + " allowed) and " + std::to_string(r.antialiased) +
+               " only at anti-aliased edges, which do not count; largest channel difference " +
+               std::to_string(r.max_channel_delta) + " of 255 (tolerance " +
+               std::to_string(o.tolerance) + ")";
     return std::to_string(r.different) + " pixels differ (allowed " +
            std::to_string(o.max_different) + ")" +
            (r.different > 0 ? ", " + cluster_text(r, o) : std::string()) + ", " +

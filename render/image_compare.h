@@ -55,7 +55,8 @@ struct CompareResult {
     // Same size as the inputs: a faded grey copy of the first image, with different pixels red
     // and anti-aliased ones yellow. Empty when the sizes differ.
     Image diff;
-    std::string summary; // one line for people, e.g. "12 pixels differ (max channel delta 40) ..."
+    std::string summary; // one line for people: "identical, bit for bit", "matches, not
+                         // bit-identical: ...", or "12 pixels differ (allowed 0), ..."
 };
 
 CompareResult compare_images(const Image& a, const Image& b, const CompareOptions& options = {});

@@ -9,8 +9,9 @@
 //   6. occlusion   the ground decals of ambient occlusion (occlusion_decals.h)
 //   7. sky         one screen-covering triangle on the far plane (sky.vert / sky.frag); drawn
 //                  after the scene so the depth test skips every pixel an object already covers
-//   7b. lines      world-space polylines as ribbons, behind bodies where they pass behind
-//                  (line_ribbons.h), and the canvas (charts) over everything, both multisampled
+//   7b. lines      translucent surfaces' far sides (glass.h), world-space polylines as ribbons,
+//                  behind bodies where they pass behind (line_ribbons.h), the surfaces' near
+//                  sides, and the canvas (charts, legends) over everything, all multisampled
 //   8. resolve     average each pixel's MSAA samples into the single-sample target
 //   9. overlay     text in a corner (text_overlay.h), after the resolve: it needs no MSAA
 //  10. read back   glReadPixels into the caller's Image, flipped to top-down rows
@@ -23,6 +24,7 @@
 #include "render/draw_list.h"
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
+#include "render/glass.h"
 #include "render/line_ribbons.h"
 #include "render/mesh.h"
 #include "render/occlusion_decals.h"
@@ -188,6 +190,7 @@ struct Renderer::Impl {
     std::optional<OcclusionDecals> decals;
     std::unique_ptr<TextOverlay> overlay; // made on first use
     std::unique_ptr<LineRibbons> ribbons; // made on first use
+    std::unique_ptr<GlassPass> glass;     // made on first use
     DrawLists lists;
     FrameStats stats;
     GLuint empty_vao = 0; // core profile draws need a vertex array, even one with no attributes
@@ -219,6 +222,7 @@ struct Renderer::Impl {
     void reflection_pass(const SceneView& view, const FrameMatrices& m);
     void scene_pass(const SceneView& view, const FrameMatrices& m);
     void sky_pass(const SceneView& view, const FrameMatrices& m);
+    void construction_pass(const SceneView& view, const FrameMatrices& m);
 };
 
 void Renderer::Impl::shadow_pass() {
@@ -344,6 +348,20 @@ void Renderer::Impl::sky_pass(const SceneView& view, const FrameMatrices& m) {
     glDepthMask(GL_TRUE);
 }
 
+void Renderer::Impl::construction_pass(const SceneView& view, const FrameMatrices& m) {
+    if (!view.glass.empty() && !glass) glass = std::make_unique<GlassPass>();
+    if (glass)
+        glass->draw(view.glass, GlassPass::Half::Far, library, m.view_proj, view.camera,
+                    view.light);
+    if (!view.lines.strips.empty()) {
+        if (!ribbons) ribbons = std::make_unique<LineRibbons>();
+        ribbons->draw(view.lines, m.view_proj, options.width, options.height);
+    }
+    if (glass)
+        glass->draw(view.glass, GlassPass::Half::Near, library, m.view_proj, view.camera,
+                    view.light);
+}
+
 Renderer::Renderer(const RenderOptions& options) : impl_(std::make_unique<Impl>(options)) {}
 
 Renderer::~Renderer() = default;
@@ -376,10 +394,7 @@ void Renderer::draw(const SceneView& view, Image& out) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     r.scene_pass(view, m);
     r.sky_pass(view, m);
-    if (!view.lines.strips.empty()) {
-        if (!r.ribbons) r.ribbons = std::make_unique<LineRibbons>();
-        r.ribbons->draw(view.lines, m.view_proj, o.width, o.height);
-    }
+    r.construction_pass(view, m);
     if (!view.canvas.empty()) {
         if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.width, o.height);
         r.overlay->draw(view.canvas, o.width, o.height);
@@ -388,7 +403,7 @@ void Renderer::draw(const SceneView& view, Image& out) {
     if (!view.overlay.empty()) {
         if (!r.overlay) r.overlay = std::make_unique<TextOverlay>(o.width, o.height);
         r.target.bind();
-        r.overlay->draw(view.overlay, o.width, o.height);
+        r.overlay->draw(view.overlay, view.overlay_at, o.width, o.height);
     }
     r.target.read_rgb(out);
     check_gl("while drawing a frame");

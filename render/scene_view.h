@@ -93,6 +93,15 @@ struct Polylines {
     }
 };
 
+// A translucent surface (render/glass.h): a construction's energy ellipsoid or plane, seen
+// through. `transform` places the unit mesh as for an Instance (Sphere, Box, Cylinder or Plane;
+// not Custom). Closed meshes show their far side through their near side.
+struct Glass {
+    MeshKind mesh = MeshKind::Sphere;
+    glm::mat4 transform{1.0f};
+    glm::vec4 rgba{1.0f, 1.0f, 1.0f, 0.25f}; // sRGB colour, opacity where it faces the eye
+};
+
 // Flat drawing over the picture (charts), in pixels from the image's top-left corner, sRGB
 // colours with opacity: filled rectangles, then polylines, then text labels, each in order.
 struct Canvas {
@@ -129,11 +138,15 @@ struct SceneView {
     // alive (it holds a weak_ptr), so pass the same shared_ptr every frame: copying it into the
     // view costs a reference count, not an upload. A MeshData must not change once shared.
     std::vector<std::shared_ptr<const MeshData>> meshes;
-    // Text drawn in the top-left corner over a translucent panel, one entry per line (ASCII;
-    // other bytes show as '?'). Empty: no overlay.
+    // Text drawn over a translucent panel, one entry per line (ASCII; other bytes show as '?').
+    // Empty: no overlay. The panel's top-left corner is `overlay_at` (pixels from the image's
+    // top-left corner; app/view/overlay_layout.h chooses it), or the top-left corner's margin
+    // when negative.
     std::vector<std::string> overlay;
-    Polylines lines; // trails and constructions, in the world
-    Canvas canvas;   // charts, over the picture
+    glm::vec2 overlay_at{-1.0f, -1.0f};
+    Polylines lines;          // trails and constructions, in the world
+    std::vector<Glass> glass; // translucent surfaces of constructions, in the world
+    Canvas canvas;            // charts and legends, over the picture
 };
 
 } // namespace tumble::render

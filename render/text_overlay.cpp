@@ -19,36 +19,66 @@ constexpr int kFirstChar = 32, kCharCount = 95; // printable ASCII
 const float kTextColor[4] = {1.0f, 1.0f, 1.0f, 0.95f};
 const float kPanelColor[4] = {0.05f, 0.06f, 0.08f, 0.55f};
 
-} // namespace
-
-TextOverlay::TextOverlay(int image_width, int image_height)
-    : program_(shader_asset("text.vert"), shader_asset("text.frag")) {
+const unsigned char* font_data() {
     const std::string_view font = assets::find(kFont);
     if (font.empty()) throw RenderError(std::string("font ") + kFont + " is not embedded");
-    const auto* data = reinterpret_cast<const unsigned char*>(font.data());
-    pixel_height_ = std::max(
-        9.0f, std::round(std::min(float(image_height) / 40.0f, float(image_width) / 32.0f)));
-    atlas_width_ = pixel_height_ > 24 ? 1024 : 512;
-    atlas_height_ = pixel_height_ > 48 ? 1024 : 512;
+    return reinterpret_cast<const unsigned char*>(font.data());
+}
+
+} // namespace
+
+float OverlayFont::margin() const {
+    return std::round(0.8f * pixel_height);
+}
+
+float OverlayFont::pad() const {
+    return std::round(0.5f * pixel_height);
+}
+
+glm::vec2 OverlayFont::panel_size(const std::vector<std::string>& lines) const {
+    std::size_t columns = 0;
+    for (const std::string& line : lines) columns = std::max(columns, line.size());
+    return {2 * pad() + std::ceil(advance * float(columns)),
+            2 * pad() + line_height * float(lines.size())};
+}
+
+OverlayFont overlay_font(int width, int height) {
+    const unsigned char* data = font_data();
+    OverlayFont f;
+    // At 11 pixels on a 320 x 180 tile the old panel covered 80% of it; below 9 the glyphs blur.
+    f.pixel_height =
+        std::max(9.0f, std::round(std::min(float(height) / 40.0f, float(width) / 32.0f)));
+    stbtt_fontinfo info;
+    if (!stbtt_InitFont(&info, data, stbtt_GetFontOffsetForIndex(data, 0)))
+        throw RenderError(std::string("cannot read the font ") + kFont);
+    int ascent = 0, descent = 0, gap = 0, advance = 0, bearing = 0;
+    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
+    stbtt_GetCodepointHMetrics(&info, 'M', &advance, &bearing);
+    const float scale = stbtt_ScaleForPixelHeight(&info, f.pixel_height);
+    f.advance = float(advance) * scale;
+    f.ascent = std::round(float(ascent) * scale);
+    f.line_height = std::round(float(ascent - descent + gap) * scale);
+    return f;
+}
+
+TextOverlay::TextOverlay(int image_width, int image_height)
+    : font_(overlay_font(image_width, image_height)),
+      program_(shader_asset("text.vert"), shader_asset("text.frag")) {
+    const unsigned char* data = font_data();
+    const float px = font_.pixel_height;
+    atlas_width_ = px > 24 ? 1024 : 512;
+    atlas_height_ = px > 48 ? 1024 : 512;
     std::vector<unsigned char> atlas(std::size_t(atlas_width_) * std::size_t(atlas_height_));
     stbtt_bakedchar baked[kCharCount];
-    if (stbtt_BakeFontBitmap(data, 0, pixel_height_, atlas.data(), atlas_width_, atlas_height_,
-                             kFirstChar, kCharCount, baked) <= 0)
-        throw RenderError("the overlay font does not fit its atlas at " +
-                          std::to_string(pixel_height_) + " pixels");
+    if (stbtt_BakeFontBitmap(data, 0, px, atlas.data(), atlas_width_, atlas_height_, kFirstChar,
+                             kCharCount, baked) <= 0)
+        throw RenderError("the overlay font does not fit its atlas at " + std::to_string(px) +
+                          " pixels");
     for (int i = 0; i < kCharCount; ++i) {
         const stbtt_bakedchar& b = baked[i];
         glyphs_[std::size_t(i)] = {float(b.x0), float(b.y0), float(b.x1), float(b.y1),
                                    b.xoff,      b.yoff,      b.xadvance};
     }
-    stbtt_fontinfo info;
-    if (!stbtt_InitFont(&info, data, stbtt_GetFontOffsetForIndex(data, 0)))
-        throw RenderError(std::string("cannot read the font ") + kFont);
-    int ascent = 0, descent = 0, gap = 0;
-    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
-    const float scale = stbtt_ScaleForPixelHeight(&info, pixel_height_);
-    ascent_ = std::round(float(ascent) * scale);
-    line_height_ = std::round(float(ascent - descent + gap) * scale);
 
     glGenTextures(1, &texture_);
     glBindTexture(GL_TEXTURE_2D, texture_);
@@ -78,21 +108,19 @@ void TextOverlay::quad(float x0, float y0, float x1, float y1, float u0, float v
         vertices_.insert(vertices_.end(), {k[0], k[1], k[2], k[3], c[0], c[1], c[2], c[3]});
 }
 
-void TextOverlay::draw(const std::vector<std::string>& lines, int width, int height) {
+void TextOverlay::draw(const std::vector<std::string>& lines, glm::vec2 at, int width, int height) {
     if (lines.empty()) return;
     vertices_.clear();
-    const float margin = std::round(0.8f * pixel_height_);
-    const float pad = std::round(0.5f * pixel_height_);
-    const float advance = glyphs_[0].advance; // monospaced: every glyph advances the same
-    std::size_t columns = 0;
-    for (const std::string& line : lines) columns = std::max(columns, line.size());
+    if (at.x < 0.0f || at.y < 0.0f) at = glm::vec2(font_.margin());
+    at = glm::round(at); // glyphs on whole pixels
+    const glm::vec2 size = font_.panel_size(lines);
+    const float pad = font_.pad();
     // The panel first, then the glyphs over it (one draw call: order within it is kept).
-    quad(margin, margin, margin + 2 * pad + std::ceil(advance * float(columns)),
-         margin + 2 * pad + line_height_ * float(lines.size()), -1, -1, -1, -1, kPanelColor);
-    float baseline = margin + pad + ascent_;
+    quad(at.x, at.y, at.x + size.x, at.y + size.y, -1, -1, -1, -1, kPanelColor);
+    float baseline = at.y + pad + font_.ascent;
     for (const std::string& line : lines) {
-        text(margin + pad, baseline, line, kTextColor);
-        baseline += line_height_;
+        text(at.x + pad, baseline, line, kTextColor);
+        baseline += font_.line_height;
     }
     submit(width, height);
 }

@@ -15,24 +15,40 @@
 
 namespace tumble::render {
 
+// The overlay font at the size an image of `width` x `height` pixels gets: 1/40 of the height (18
+// pixels at 720p), but no more than 1/32 of the width, so that a narrow image (a tile of `render
+// --compare`) keeps most of its picture; at least 9 pixels, below which the glyphs stop being
+// legible. Its metrics, in pixels, are what app/view lays panels out with.
+struct OverlayFont {
+    float pixel_height = 9.0f;
+    float advance = 0.0f;     // every glyph's (monospaced)
+    float ascent = 0.0f;      // baseline below a line's top
+    float line_height = 0.0f; // from one baseline to the next
+    float margin() const;     // from the image's edge to a panel
+    float pad() const;        // from a panel's edge to its text
+    // A panel holding `lines` (the text overlay's), with its pads.
+    glm::vec2 panel_size(const std::vector<std::string>& lines) const;
+};
+// Reads the embedded font's metrics (no GL needed); throws RenderError if it is missing.
+OverlayFont overlay_font(int width, int height);
+
 class TextOverlay {
   public:
-    // Bakes the font at a size that suits an image of `image_width` x `image_height` pixels: 1/40
-    // of the height (18 pixels at 720p), but no more than 1/32 of the width, so that a narrow
-    // image (a tile of `render --compare`) keeps most of its picture; at least 9 pixels. At 11
-    // pixels on a 320 x 180 tile the panel covered 80% of it. Needs a current GL context; throws
-    // RenderError if the font is missing.
+    // Bakes the font at overlay_font(image_width, image_height)'s size. Needs a current GL
+    // context; throws RenderError if the font is missing.
     TextOverlay(int image_width, int image_height);
     ~TextOverlay();
     TextOverlay(const TextOverlay&) = delete;
     TextOverlay& operator=(const TextOverlay&) = delete;
 
-    // Draws over whatever is in the bound framebuffer (blending on, depth test off).
-    void draw(const std::vector<std::string>& lines, int width, int height);
+    // Draws `lines` on their panel (OverlayFont::panel_size) with its top-left corner at `at`
+    // (negative: the top-left corner's margin), over whatever is in the bound framebuffer
+    // (blending on, depth test off).
+    void draw(const std::vector<std::string>& lines, glm::vec2 at, int width, int height);
     // Draws a canvas (charts) the same way: its rectangles, its polylines as quads of their
     // width, and its labels in this font.
     void draw(const Canvas& canvas, int width, int height);
-    float pixel_height() const { return pixel_height_; }
+    float pixel_height() const { return font_.pixel_height; }
 
   private:
     struct Glyph {
@@ -45,10 +61,9 @@ class TextOverlay {
     void segment(glm::vec2 a, glm::vec2 b, float width, const float* rgba);
     void submit(int width, int height); // draws vertices_
 
-    float pixel_height_ = 0;
+    OverlayFont font_;
     int atlas_width_ = 0, atlas_height_ = 0;
     std::array<Glyph, 95> glyphs_{}; // ' ' .. '~'
-    float ascent_ = 0, line_height_ = 0;
     ShaderProgram program_;
     GLint viewport_uniform_ = -1;
     GLuint texture_ = 0;

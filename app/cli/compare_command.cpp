@@ -26,6 +26,7 @@ void print_summary(const CompareRun& run) {
     std::fprintf(stderr, "tumble: wrote %s (%lld frames, %d x %d tiles of %dx%d)\n",
                  run.output.c_str(), static_cast<long long>(run.frames), run.cols, run.rows,
                  run.tile_width, run.tile_height);
+    if (!run.sink_note.empty()) std::fprintf(stderr, "tumble: note: %s\n", run.sink_note.c_str());
 }
 
 } // namespace
@@ -34,8 +35,10 @@ int run_compare(const RenderCommand& cmd) {
     io::InterruptGuard guard; // from the start: no signal can leave the output half-written
     check_compare_request(cmd.common.run);
     const bool quiet = cmd.common.quiet;
+    RenderRequest request = cmd;
+    request.quiet = quiet;
     const CompareRun run =
-        render_compare(load_for_command(cmd.common), cmd, cmd.common.threads, quiet,
+        render_compare(load_for_command(cmd.common), request, cmd.common.threads, quiet,
                        [quiet](const std::string& n) {
                            if (!quiet) std::fprintf(stderr, "tumble: note: %s\n", n.c_str());
                        });

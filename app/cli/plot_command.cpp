@@ -7,10 +7,12 @@
 #include "app/gnuplot/gnuplot.h"
 #include "app/plot/figure.h"
 #include "app/plot/series.h"
+#include "app/scene/content_hash.h"
 #include "app/scene/scene.h"
 #include "app/scene/scene_check.h"
 #include "io/bad_input.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -67,23 +69,55 @@ std::vector<std::string> labels_of(const PlotCommand& cmd,
     return cmd.labels;
 }
 
+bool needs_scene(const plot::PlotRequest& req) {
+    return !req.bodies.empty() &&
+           std::any_of(req.quantities.begin(), req.quantities.end(),
+                       [](const plot::Quantity* q) { return q->needs_scene; });
+}
+
+// The scene the runs record (tumble simulate writes it on their first line), when it is the same
+// scene still: a file edited since would give other masses. None when the runs record none.
+std::optional<Scene> scene_the_runs_record(const std::vector<plot::RunFiles>& files) {
+    const std::optional<SceneRecord> record = plot::recorded_scene(files);
+    if (!record) return std::nullopt;
+    const std::string hint = "; name the runs' scene with --scene";
+    Scene scene;
+    try {
+        scene = load_scene_argument(record->source);
+    } catch (const io::BadInput& e) {
+        throw io::BadInput(files.front().states.string() + " was made from " + record->source +
+                           ", which cannot be read now (" + e.what() + ")" + hint);
+    }
+    if (ContentHash::to_hex(scene.content_hash) != record->content_hash)
+        throw io::BadInput(files.front().states.string() + " was made from " + record->source +
+                           ", which has changed since (content hash " + record->content_hash +
+                           ", now " + ContentHash::to_hex(scene.content_hash) + ")" + hint);
+    return scene;
+}
+
 int run_plot(const PlotCommand& cmd) {
     if (!gnuplot::is_figure_name(cmd.output))
         throw io::BadInput("-o " + cmd.output + ": expected a figure name ending in .png or .svg");
     plot::PlotRequest req;
     req.quantities = find_quantities(cmd.quantities);
     req.bodies = cmd.bodies;
-    std::optional<CheckedStart> start; // the scene's model, when --scene names one
-    if (!cmd.scene.empty()) {
-        const Scene scene = load_scene_argument(cmd.scene);
-        start = build_checked(scene, scene.world.dt);
-        req.model = &start->model;
-        req.scene_source = cmd.scene;
-        for (const BodyLook& look : scene.looks) req.scene_bodies.push_back(look.name);
-    }
-    plot::check_request(req);   // options first: a mistake costs no reading
-    gnuplot::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
     const std::vector<plot::RunFiles> files = plot::distinct_runs(cmd.runs);
+    std::optional<CheckedStart> start; // the scene's model, from --scene or the runs' record
+    std::optional<Scene> scene;
+    if (!cmd.scene.empty()) {
+        scene = load_scene_argument(cmd.scene);
+        req.scene_source = cmd.scene;
+    } else if (needs_scene(req)) {
+        scene = scene_the_runs_record(files);
+        if (scene) req.scene_source = scene->source;
+    }
+    if (scene) {
+        start = build_checked(*scene, scene->world.dt);
+        req.model = &start->model;
+        for (const BodyLook& look : scene->looks) req.scene_bodies.push_back(look.name);
+    }
+    plot::check_request(req); // options first: a mistake costs no reading of the tables
+    gnuplot::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
     const std::vector<std::string> labels = labels_of(cmd, files);
     std::vector<plot::Run> runs;
     for (std::size_t i = 0; i < files.size(); ++i)
@@ -118,7 +152,7 @@ Subcommand add_plot_command(CLI::App& app) {
         ->delimiter(',');
     p->add_option("--scene", cmd->scene,
                   "the runs' scene (file or built-in name): the masses and inertia that a body's "
-                  "energy or momentum needs");
+                  "energy or momentum needs (default: the scene the runs record)");
     p->add_option("--labels", cmd->labels, "legend names of the runs, in order")->delimiter(',');
     p->add_option("--title", cmd->title, "the figure's title");
     p->add_option("-o,--output", cmd->output,

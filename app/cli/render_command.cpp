@@ -97,7 +97,11 @@ void add_switches(CLI::App* r, RenderCommand& render) {
                   "also trace the tip of this body axis: x, y or z (implies --trails)");
     r->add_option("--poinsot", render.poinsot,
                   "Poinsot's construction for this torque-free body: its energy ellipsoid rolling "
-                  "on the invariable plane, with the polhode and herpolhode");
+                  "on the invariable plane, with the polhode and herpolhode, framed by the camera "
+                  "unless --camera is given (a warning if the body may feel a torque)");
+    r->add_option("--camera", render.camera,
+                  "the camera: X,Y,Z:X,Y,Z[:FOV] (position:target[:field of view, degrees]), "
+                  "auto (every moving body in view) or poinsot (the construction)");
     r->add_option("--overlay-body", render.overlay_body,
                   "the overlay shows this body's energy and momentum instead of the scene's sums");
     r->add_flag("--stats", render.stats, "print the frame rate of each pipeline stage");
@@ -136,6 +140,7 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
     report_tolerance(scene, sim);
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
+    if (!sink.note().empty()) std::fprintf(stderr, "tumble: note: %s\n", sink.note().c_str());
 }
 
 int run_render(const RenderCommand& command) {
@@ -144,6 +149,7 @@ int run_render(const RenderCommand& command) {
                            "--from-checkpoints");
     if (!command.compare.empty()) return run_compare(command);
     RenderCommand cmd = command;
+    cmd.quiet = cmd.common.quiet;
     // From the start: auto's pilots and camera.auto's pre-pass stop on Ctrl-C too, and no signal
     // can leave the output half-written (on an exception the sink's destructor deletes it).
     io::InterruptGuard guard;

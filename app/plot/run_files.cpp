@@ -3,6 +3,7 @@
 #include "app/run/trajectory_reader.h"
 #include "app/run/trajectory_writer.h"
 #include "app/scene/scene_error.h"
+#include "io/bad_input.h"
 #include "physics/integrator.h"
 
 #include <algorithm>
@@ -70,6 +71,20 @@ std::vector<std::string> run_labels(const std::vector<RunFiles>& runs) {
                     out[i] = runs[i].states.string();
             }
     return out;
+}
+
+std::optional<SceneRecord> recorded_scene(const std::vector<RunFiles>& runs) {
+    std::optional<SceneRecord> first;
+    for (const RunFiles& r : runs) {
+        const std::optional<SceneRecord> here = read_scene_record(r.states);
+        if (&r == &runs.front()) first = here;
+        if (!first) return std::nullopt;
+        if (!here || here->source != first->source || here->content_hash != first->content_hash)
+            throw io::BadInput(r.states.string() + " was not made from the scene of " +
+                               runs.front().states.string() + " (" + first->source +
+                               "): name the scene with --scene");
+    }
+    return first;
 }
 
 Run read_run(const RunFiles& files, const std::string& label, bool states, bool diagnostics) {

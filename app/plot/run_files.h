@@ -1,9 +1,11 @@
 #pragma once
 // One `tumble simulate` run as `tumble plot` finds it: its two tables (app/run/trajectory_writer.h)
 // and the name its series carry in a legend.
+#include "app/run/trajectory_reader.h"
 #include "app/run/trajectory_rows.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,11 @@ struct Run {
     std::vector<StateRow> states;            // empty unless read
     std::vector<DiagnosticsRow> diagnostics; // empty unless read
 };
+
+// The scene the runs' states tables record on their first line (app/run/trajectory_rows.h), for
+// a figure that needs masses when --scene is not given: none when the first run records none.
+// Throws io::BadInput when two runs record different scenes.
+std::optional<SceneRecord> recorded_scene(const std::vector<RunFiles>& runs);
 
 // Reads the tables asked for; throws SceneError (exit 2) naming the file and line:column.
 Run read_run(const RunFiles& files, const std::string& label, bool states, bool diagnostics);

@@ -13,7 +13,9 @@ const Table& identity_table() {
     static const Table t{"gl",
                          "the GL renderer that drew a golden",
                          {{"gl_renderer", types::string(), "GL_RENDERER", true},
-                          {"gl_version", types::string(), "GL_VERSION", true}}};
+                          {"gl_version", types::string(), "GL_VERSION", true},
+                          {"scene_content_hash", types::string(),
+                           "the content hash of the scene the image was drawn from", false}}};
     return t;
 }
 
@@ -48,7 +50,9 @@ GoldenRenderers GoldenRenderers::load(const std::filesystem::path& goldens) {
         const JsonReader entry(it.value(), out.path_.string(),
                                images.reader().path() + "/" + json_pointer_segment(it.key()));
         ObjectReader e(entry, identity_table());
-        out.images_[it.key()] = {e.field("gl_renderer").string(), e.field("gl_version").string()};
+        Entry& kept = out.images_[it.key()];
+        kept.gl = {e.field("gl_renderer").string(), e.field("gl_version").string()};
+        if (auto h = e.optional("scene_content_hash")) kept.scene_hash = h->string();
         e.finish();
     }
     r.finish();
@@ -57,17 +61,25 @@ GoldenRenderers GoldenRenderers::load(const std::filesystem::path& goldens) {
 
 GlIdentity GoldenRenderers::of(const std::string& image_file) const {
     const auto it = images_.find(image_file);
-    return it == images_.end() ? GlIdentity{} : it->second;
+    return it == images_.end() ? GlIdentity{} : it->second.gl;
 }
 
-void GoldenRenderers::set(const std::string& image_file, const GlIdentity& gl) {
-    images_[image_file] = gl;
+std::string GoldenRenderers::scene_hash_of(const std::string& image_file) const {
+    const auto it = images_.find(image_file);
+    return it == images_.end() ? std::string() : it->second.scene_hash;
+}
+
+void GoldenRenderers::set(const std::string& image_file, const GlIdentity& gl,
+                          const std::string& scene_hash) {
+    images_[image_file] = {gl, scene_hash};
 }
 
 void GoldenRenderers::save() const {
     nlohmann::json images = nlohmann::json::object();
-    for (const auto& [file, gl] : images_)
-        images[file] = {{"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
+    for (const auto& [file, e] : images_) {
+        images[file] = {{"gl_renderer", e.gl.renderer}, {"gl_version", e.gl.version}};
+        if (!e.scene_hash.empty()) images[file]["scene_content_hash"] = e.scene_hash;
+    }
     const nlohmann::json root = {{"format_version", 1}, {"images", images}};
     io::AtomicFile file(path_);
     std::ofstream out(file.temp_path(), std::ios::binary);

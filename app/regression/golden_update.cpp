@@ -2,6 +2,7 @@
 
 #include "app/regression/golden_renderers.h"
 #include "app/run/trajectory_writer.h"
+#include "app/scene/content_hash.h"
 #include "io/atomic_file.h"
 #include "io/bad_input.h"
 #include "render/png_io.h"
@@ -58,7 +59,8 @@ UpdateResult update_goldens(const Suite& suite, const SuiteRun& run, bool force)
             // Goldens are committed: the smallest file (zlib level 9) rather than the fastest.
             render::write_png(r.image->golden, r.image_outcome.actual,
                               {render::PngEncoder::libpng, 9});
-            record.set(r.image->golden.filename().string(), run.gl);
+            record.set(r.image->golden.filename().string(), run.gl,
+                       ContentHash::to_hex(r.scene->scene.content_hash));
             images = true;
             out.lines.push_back(line(r, r.image->golden));
         } else {

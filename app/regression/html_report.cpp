@@ -1,16 +1,22 @@
 #include "app/regression/html_report.h"
 
+#include "app/regression/golden_renderers.h"
 #include "app/regression/junit_report.h"
 #include "app/regression/report_files.h"
 #include "app/regression/suite_runner.h"
 #include "app/regression/svg_plot.h"
+#include "app/run/trajectory_reader.h"
+#include "app/scene/content_hash.h"
 #include "io/atomic_file.h"
+#include "io/bad_input.h"
 #include "render/png_io.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 namespace tumble::app {
 namespace {
@@ -130,6 +136,25 @@ std::string state_body(const CheckResult& r) {
     return o.str();
 }
 
+// The scene's content hash now against the one its golden was made from ("" when unknown).
+std::string golden_scene_hash(const CheckResult& r, const GoldenRenderers& record) {
+    if (r.image) return record.scene_hash_of(r.image->golden.filename().string());
+    try {
+        const std::optional<SceneRecord> kept = read_scene_record(r.state->golden);
+        return kept ? kept->content_hash : "";
+    } catch (const io::BadInput&) { // the check itself says what is wrong with the golden
+        return "";
+    }
+}
+
+std::string scene_change_note(const CheckResult& r, const GoldenRenderers& record) {
+    const std::string then = golden_scene_hash(r, record);
+    const std::string now = ContentHash::to_hex(r.scene->scene.content_hash);
+    if (then.empty() || then == now) return "";
+    return "the scene has changed since this golden was made (content hash " + now +
+           ", the golden's " + then + "): a difference may come from the scene, not the code";
+}
+
 std::string subtitle(const CheckResult& r) {
     if (r.image)
         return "image &middot; " + esc(r.scene->name) + " &middot; frame " +
@@ -138,7 +163,7 @@ std::string subtitle(const CheckResult& r) {
            std::to_string(r.state->frames.size()) + " frames";
 }
 
-std::string section(const CheckResult& r, const GlIdentity& here) {
+std::string section(const CheckResult& r, const GlIdentity& here, const GoldenRenderers& record) {
     std::ostringstream o;
     const char* status = r.passed ? "passed" : "failed";
     o << "<section class=\"check " << status << "\" id=\"check-" << esc(r.name())
@@ -146,9 +171,12 @@ std::string section(const CheckResult& r, const GlIdentity& here) {
       << "<h3><span class=\"badge\">" << (r.passed ? "PASS" : "FAIL") << "</span>" << esc(r.name())
       << "<small>" << subtitle(r) << "</small></h3>\n"
       << "<p class=\"summary\">" << esc(r.summary) << "</p>\n";
-    if (!r.details.empty()) {
+    std::vector<std::string> details = r.details;
+    if (const std::string note = scene_change_note(r, record); !note.empty())
+        details.insert(details.begin(), note);
+    if (!details.empty()) {
         o << "<ul class=\"details\">";
-        for (const std::string& d : r.details) o << "<li>" << esc(d) << "</li>";
+        for (const std::string& d : details) o << "<li>" << esc(d) << "</li>";
         o << "</ul>\n";
     }
     if (!r.run_failed) o << (r.image ? image_body(r, here) : state_body(r));
@@ -187,6 +215,19 @@ std::string header(const Suite& suite, const SuiteRun& run) {
     return o.str();
 }
 
+// The passed or the failed checks: failed state checks before failed image checks (a state that
+// moved explains the pictures that moved with it), each kind in suite order; passes in suite
+// order.
+std::vector<const CheckResult*> in_report_order(const SuiteRun& run, bool failed) {
+    std::vector<const CheckResult*> out;
+    for (const CheckResult& r : run.results)
+        if (r.passed != failed) out.push_back(&r);
+    if (failed)
+        std::stable_partition(out.begin(), out.end(),
+                              [](const CheckResult* r) { return r->state != nullptr; });
+    return out;
+}
+
 void write_images(const std::filesystem::path& dir, const CheckResult& r) {
     const ReportImages files = report_images(r);
     const ImageOutcome& o = r.image_outcome;
@@ -208,15 +249,15 @@ void write_html_report(const std::filesystem::path& dir, const Suite& suite, con
          << " - Tumble test " << esc(suite.path.filename().string()) << "</title>\n<style>"
          << report_style() << "</style></head>\n<body>\n"
          << header(suite, run) << "<main>\n";
+    const GoldenRenderers record = GoldenRenderers::load(suite.goldens);
     for (const bool want_failed : {true, false}) {
         const std::size_t count = want_failed ? failed : run.results.size() - failed;
         if (count == 0) continue;
         html << "<h2 class=\"group\">" << (want_failed ? "Failed" : "Passed") << " (" << count
              << ")</h2>\n";
-        for (const CheckResult& r : run.results) {
-            if (r.passed == want_failed) continue;
-            if (r.image) write_images(dir, r);
-            html << section(r, run.gl);
+        for (const CheckResult* r : in_report_order(run, want_failed)) {
+            if (r->image) write_images(dir, *r);
+            html << section(*r, run.gl, record);
         }
     }
     html << "</main>\n<script>" << report_script() << "</script>\n</body></html>\n";

@@ -48,6 +48,7 @@ button { font: inherit; padding: 2px 10px; border: 1px solid var(--line); border
          background: #f6f8fa; cursor: pointer; }
 .plot { background: #fff; font: 11px sans-serif; margin: 4px 0 10px; display: block; }
 .plot .frame { fill: none; stroke: #8c959f; stroke-width: 1; }
+.plot .grid { stroke: #eaeef2; stroke-width: 1; }
 .plot .band { fill: rgba(46, 125, 50, 0.18); stroke: none; }
 .plot .golden { fill: none; stroke: #424a53; stroke-width: 1.5; stroke-dasharray: 5 3; }
 .plot .actual { fill: none; stroke: #1565c0; stroke-width: 1.5; }

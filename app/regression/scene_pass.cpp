@@ -46,7 +46,10 @@ void pass(const SuiteScene& s, Size size, const std::vector<const ImageCheck*>& 
     Scene scene = s.scene;
     scene.render.width = size.first;
     scene.render.height = size.second;
-    scene.render.overlay = true; // each check clears the overlay it does not want
+    // The overlay when a check wants it (each check clears the overlay it does not want); not
+    // for nothing, since the overlays' layout then looks at the whole run (FrameSource).
+    scene.render.overlay = std::any_of(indices.begin(), indices.end(),
+                                       [&](std::size_t i) { return images[i]->overlay; });
     std::int64_t last = 0;
     for (std::size_t i : indices) last = std::max(last, images[i]->frame);
     for (const StateCheck* c : states) last = std::max(last, c->frames.back());

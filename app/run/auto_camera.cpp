@@ -2,7 +2,10 @@
 
 #include "app/run/prepare_run.h"
 #include "app/run/progress.h"
+#include "app/run/simulation.h"
 #include "app/run/swept_spheres.h"
+#include "app/view/poinsot.h"
+#include "app/view/vector_arrows.h"
 #include "io/interrupt.h"
 #include "physics/can_touch.h"
 #include "physics/model.h"
@@ -88,6 +91,36 @@ render::Camera fit(const Basis& b, const glm::dvec3& up, const std::vector<Sampl
     return cam;
 }
 
+// Mode::Poinsot: the construction of render.poinsot at t = 0 (and the arrows, when drawn),
+// looked down on from the side the rig's base camera looks from, with a third of the half-frame
+// left around it for the overlays' panels.
+void frame_poinsot(Scene& scene, const Timeline& tl) {
+    CameraRig& rig = scene.render.camera;
+    const Simulation sim = start_run(scene, tl, {1, false}); // the state at t = 0
+    const glm::dvec3 hint = glm::dvec3(rig.base.position) - glm::dvec3(rig.base.target);
+    const PoinsotFraming f =
+        poinsot_framing(sim.model, sim.state, scene.render.poinsot.index, hint);
+    std::vector<Sample> samples;
+    for (const glm::dvec3& p : f.points) samples.push_back({p, 0.0});
+    if (scene.render.vectors) { // the arrows' shafts and heads, each by its bounding sphere
+        render::SceneView arrows;
+        VectorArrows(sim.model, sim.state).add(sim.model, sim.state, arrows);
+        for (const render::Instance& in : arrows.instances) {
+            const glm::mat4& t = in.transform;
+            const double r = std::sqrt(2.0) *
+                             std::max({glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])),
+                                       glm::length(glm::vec3(t[2]))});
+            samples.push_back({glm::dvec3(t[3]), r});
+        }
+    }
+    const double aspect = double(scene.render.width) / double(scene.render.height);
+    const float fov = rig.base.fov_y_deg;
+    const double margin = std::max(rig.auto_margin, 0.33);
+    rig.base = fit(Basis(f.direction, f.up, fov, aspect, margin), f.up, samples);
+    rig.base.fov_y_deg = fov;
+    rig.mode = CameraRig::Mode::Fixed;
+}
+
 } // namespace
 
 render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& direction,
@@ -103,6 +136,9 @@ render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::
 
 void frame_automatically(Scene& scene, const Timeline& tl, bool quiet) {
     CameraRig& rig = scene.render.camera;
+    if (rig.mode == CameraRig::Mode::Poinsot && scene.render.poinsot.index >= 0)
+        return frame_poinsot(scene, tl);
+    if (rig.mode == CameraRig::Mode::Poinsot) rig.mode = CameraRig::Mode::Auto; // no construction
     if (rig.mode != CameraRig::Mode::Auto) return;
     const glm::dvec3 up = up_axis(scene);
     glm::dvec3 direction = rig.auto_direction;

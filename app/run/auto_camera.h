@@ -19,10 +19,12 @@ render::Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::
                          const glm::dvec3& up, double fov_y_deg, double aspect, double margin);
 
 // If scene.render.camera is automatic, runs the pre-pass over the timeline's frames and turns it
-// into the fixed camera that keeps every sphere of swept_spheres.h in frame. Memory is bounded
+// into the fixed camera that keeps every sphere of swept_spheres.h in frame; if it frames
+// Poinsot's construction (Mode::Poinsot), into the camera that looks down on the invariable plane
+// at t = 0 with the construction in frame (app/view/poinsot.h: poinsot_framing). Memory is bounded
 // whatever the duration; a progress bar shows on a terminal unless `quiet`. Throws what stepping
 // throws (a divergence names its body and step, as the render itself would) and io::Interrupted on
-// Ctrl-C (app/run/interrupt.h).
+// Ctrl-C (io/interrupt.h).
 void frame_automatically(Scene& scene, const Timeline& tl, bool quiet = true);
 
 } // namespace tumble::app

@@ -72,6 +72,7 @@ CompareRun render_compare(Scene loaded, RenderRequest request, int threads, bool
         sink->abort(); // interrupted before the first frame: nothing worth keeping
     out.lanes = tiles.results();
     out.output = sink->describe();
+    out.sink_note = sink->note();
     out.interrupted = io::InterruptGuard::requested();
     out.cols = tiles.cols();
     out.rows = tiles.rows();

@@ -25,6 +25,7 @@ void check_compare_request(const RunRequest& run);
 struct CompareRun {
     std::vector<SideBySide::LaneResult> lanes;
     std::string output;       // what the sink wrote (FrameSink::describe())
+    std::string sink_note;    // FrameSink::note(): a GIF's frame rate when it is not the run's
     std::int64_t frames = 0;  // written
     bool interrupted = false; // stopped by Ctrl-C (io/interrupt.h); the video plays
     int cols = 0, rows = 0;   // tiles

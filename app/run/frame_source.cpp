@@ -1,6 +1,5 @@
 #include "app/run/frame_source.h"
 
-#include "app/view/overlay_text.h"
 #include "app/view/view_builder.h"
 #include "physics/step.h"
 
@@ -35,7 +34,69 @@ FrameSource::FrameSource(const Scene& scene, const Timeline& timeline, Simulatio
         trails_ = std::make_unique<Trails>(scene, sim.model, sim.state, frames, rs.trail_axis);
     }
     if (rs.poinsot.index >= 0)
-        poinsot_ = std::make_unique<PoinsotConstruction>(sim.model, sim.state, rs.poinsot.index);
+        poinsot_ =
+            std::make_unique<PoinsotConstruction>(scene, sim.model, sim.state, rs.poinsot.index);
+    lay_out();
+}
+
+OverlayInfo FrameSource::overlay_info() const {
+    const int body = scene_.render.overlay_body.index;
+    OverlayInfo info;
+    info.t = sim_.state.time(sim_.model);
+    info.step = sim_.state.step;
+    info.integrator = physics::integrator_info(sim_.model.integrator).name;
+    info.h = sim_.model.dt;
+    info.now = body < 0 ? physics::diagnose(sim_.model, sim_.state)
+                        : physics::diagnose_body(sim_.model, sim_.state, body);
+    info.initial = body < 0 ? initial_ : overlay_initial_;
+    if (body >= 0) info.subject = scene_.render.overlay_body.name;
+    if (sim_.estimate.estimator) info.estimate = estimate_overlay(*sim_.estimate.estimator, body);
+    return info;
+}
+
+// What the panels keep clear of: the bodies, arrows and construction on the screen at frames
+// spread over the whole run (a pre-pass of the physics from t = 0, as camera.auto's: the same
+// for a still, a video or a shard), until the run ends or diverges.
+std::vector<ScreenBox> FrameSource::swept_boxes() const {
+    constexpr std::int64_t kSamples = 48;
+    Simulation pre = make_simulation(scene_, timeline_.h);
+    std::vector<ScreenBox> boxes;
+    render::SceneView view;
+    const std::int64_t frames = timeline_.frames,
+                       every = std::max<std::int64_t>(1, frames / kSamples);
+    try {
+        for (std::int64_t k = 0; k < frames; ++k) {
+            if (k > 0)
+                for (int s = 0; s < timeline_.steps_per_frame; ++s) pre.step();
+            if (k % every != 0 && k != frames - 1) continue;
+            build_view(scene_, pre.model, pre.state, view);
+            if (scene_.render.vectors) arrows_.add(pre.model, pre.state, view);
+            view.glass.clear(), view.lines.clear();
+            if (poinsot_) poinsot_->add(pre.model, pre.state, view);
+            const std::vector<ScreenBox> now = keep_visible(view, canvas_width_, canvas_height_);
+            boxes.insert(boxes.end(), now.begin(), now.end());
+        }
+    } catch (const physics::DivergenceError&) { // the run itself will say so, frame by frame
+    }
+    return boxes;
+}
+
+void FrameSource::lay_out() {
+    OverlayContent content;
+    if (scene_.render.overlay) {
+        const OverlayInfo info = overlay_info();
+        overlay_lines(info, content.text);
+        overlay_lines(info, content.compact_text, true);
+    }
+    for (const bool compact : {false, true}) {
+        std::vector<LegendItem>& legend = compact ? content.compact_legend : content.legend;
+        if (scene_.render.vectors) legend = VectorArrows::legend(compact);
+        if (poinsot_)
+            for (LegendItem& item : poinsot_->legend(compact)) legend.push_back(std::move(item));
+    }
+    content.charts = chart_ ? chart_->panels() : 0;
+    if (content.text.empty() && content.legend.empty() && content.charts == 0) return;
+    overlays_ = FrameOverlays(swept_boxes(), canvas_width_, canvas_height_, content);
 }
 
 void FrameSource::record() {
@@ -71,14 +132,17 @@ void FrameSource::step_one_frame() {
     record();
 }
 
+// The world's additions (trails, the construction) and, once laid out, the panels over them.
 void FrameSource::add_teaching(render::SceneView& view) const {
     view.lines.clear();
+    view.glass.clear();
     view.canvas.clear();
-    if (trails_) trails_->add(view.lines);
-    if (poinsot_) poinsot_->add(sim_.model, sim_.state, view.lines);
+    if (trails_) trails_->add(view);
+    if (poinsot_) poinsot_->add(sim_.model, sim_.state, view);
+    overlays_.draw_legend(view.canvas);
     if (chart_)
         draw_charts(*chart_, *chart_scale_, sim_.state.time(sim_.model), scene_.duration,
-                    canvas_width_, canvas_height_, view.canvas);
+                    overlays_.font(), overlays_.charts(), view.canvas);
 }
 
 bool FrameSource::next(render::SceneView& view) {
@@ -87,24 +151,11 @@ bool FrameSource::next(render::SceneView& view) {
     build_view(scene_, sim_.model, sim_.state, view);
     if (scene_.render.vectors) arrows_.add(sim_.model, sim_.state, view);
     add_teaching(view);
-    if (scene_.render.overlay) {
-        const int body = scene_.render.overlay_body.index;
-        OverlayInfo info;
-        info.t = sim_.state.time(sim_.model);
-        info.step = sim_.state.step;
-        info.integrator = physics::integrator_info(sim_.model.integrator).name;
-        info.h = sim_.model.dt;
-        info.now = body < 0 ? physics::diagnose(sim_.model, sim_.state)
-                            : physics::diagnose_body(sim_.model, sim_.state, body);
-        info.initial = body < 0 ? initial_ : overlay_initial_;
-        if (body >= 0) info.subject = scene_.render.overlay_body.name;
-        if (sim_.estimate.estimator)
-            info.estimate = estimate_overlay(*sim_.estimate.estimator, body);
-        overlay_lines(info, view.overlay);
-        if (scene_.render.vectors) view.overlay.emplace_back(VectorArrows::legend());
-    } else {
+    view.overlay_at = overlays_.text_at();
+    if (scene_.render.overlay)
+        overlay_lines(overlay_info(), view.overlay, overlays_.compact_text());
+    else
         view.overlay.clear();
-    }
     if (observer_) observer_(k_, sim_);
     if (k_ >= last_)
         done_ = true;

@@ -6,6 +6,8 @@
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"
 #include "app/scene/scene.h"
+#include "app/view/frame_overlays.h"
+#include "app/view/overlay_text.h"
 #include "app/view/poinsot.h"
 #include "app/view/strip_chart.h"
 #include "app/view/trails.h"
@@ -59,6 +61,9 @@ class FrameSource {
     void step_one_frame();
     void record(); // the teaching overlays' sample of this frame
     void add_teaching(render::SceneView& view) const;
+    OverlayInfo overlay_info() const; // the overlay's numbers now
+    std::vector<ScreenBox> swept_boxes() const;
+    void lay_out(); // plans overlays_
 
     const Scene& scene_;
     const Timeline& timeline_;
@@ -74,6 +79,7 @@ class FrameSource {
     std::unique_ptr<Trails> trails_;
     std::unique_ptr<PoinsotConstruction> poinsot_;
     int canvas_width_, canvas_height_;
+    FrameOverlays overlays_;
     Observer observer_;
 };
 

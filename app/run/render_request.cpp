@@ -3,6 +3,7 @@
 #include "app/run/key_interval.h"
 #include "app/run/stale_temporaries.h"
 #include "app/scene/scene_error.h"
+#include "app/view/poinsot.h"
 #include "io/bad_input.h"
 #include "render/open_sink.h"
 
@@ -38,11 +39,14 @@ void apply_teaching_overrides(const RenderRequest& cmd, Scene& scene) {
         rs.trails = true;
     }
     if (cmd.poinsot) rs.poinsot = {*cmd.poinsot, "--poinsot"};
+    if (cmd.poinsot && !cmd.camera) rs.camera.mode = CameraRig::Mode::Poinsot; // frame it
     if (cmd.overlay_body) {
         rs.overlay_body = {*cmd.overlay_body, "--overlay-body"};
         rs.overlay = true;
     }
     resolve_render_bodies(scene);
+    if (const std::string w = poinsot_warning(scene); !w.empty() && !cmd.quiet)
+        std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
 }
 
 } // namespace
@@ -68,6 +72,7 @@ void apply_render_overrides(const RenderRequest& cmd, Scene& scene) {
     if (cmd.overlay) rs.overlay = *cmd.overlay;
     if (cmd.axes) rs.axes = *cmd.axes;
     if (cmd.vectors) rs.vectors = *cmd.vectors;
+    if (cmd.camera) read_camera_option(*cmd.camera, "--camera", rs.camera);
     apply_teaching_overrides(cmd, scene);
     if (rs.width < rs.kMinSide || rs.height < rs.kMinSide || rs.width > rs.kMaxWidth ||
         rs.height > rs.kMaxHeight)

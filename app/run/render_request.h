@@ -31,9 +31,13 @@ struct RenderRequest {
     // Teaching overlays; unset ones keep the scene's.
     std::optional<std::vector<std::string>> chart; // quantity names
     std::optional<std::string> chart_body, poinsot, overlay_body, trail_axis;
+    // --camera POSITION:TARGET[:FOV], auto or poinsot (app/scene/camera_rig.h:
+    // read_camera_option); unset: the scene's, or the construction's with --poinsot.
+    std::optional<std::string> camera;
     std::optional<double> chart_window, trail_seconds;
     std::optional<bool> trails;
     bool overwrite = false; // a frame folder may hold an earlier run's frames: remove them first
+    bool quiet = false;     // no warnings on stderr (a --poinsot body that may feel a torque)
     // Integrators drawn side by side, each stepping its own copy of the scene (compare_run.h).
     std::vector<std::string> compare;
 };
@@ -45,8 +49,9 @@ struct RunOutput {
     std::string comment;
 };
 
-// --width/--height/--fps and the picture switches (--preview, --[no-]shadows, --[no-]aa,
-// --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws SceneError.
+// --width/--height/--fps, --camera and the picture switches (--preview, --[no-]shadows,
+// --[no-]aa, --[no-]overlay, --[no-]axes) applied to the scene's render settings. Throws
+// SceneError.
 void apply_render_overrides(const RenderRequest& request, Scene& scene);
 
 // The encoder preset of a run: --preset if given, else "ultrafast" for --preview (a quick look:

@@ -3,8 +3,11 @@
 #include "app/scene/input_file.h"
 #include "app/scene/scene_error.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cerrno>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 namespace tumble::app {
@@ -29,6 +32,14 @@ class CsvText {
         split(text_.substr(at_, end - at_), line);
         at_ = end + 1;
         return true;
+    }
+    // Passes over lines that start with '#'.
+    void skip_comments() {
+        while (at_ < text_.size() && text_[at_] == '#') {
+            const std::size_t end = text_.find('\n', at_);
+            at_ = end == std::string::npos ? text_.size() : end + 1;
+            ++line_no_;
+        }
     }
     [[noreturn]] void fail(std::size_t column, const std::string& what) const {
         throw SceneError(file_, std::to_string(line_no_) + ":" + std::to_string(column), what);
@@ -113,6 +124,7 @@ std::vector<Row> read_table(const std::filesystem::path& path, const char* heade
                             const std::string& more = "") {
     CsvText csv(read_input_file(path, "trajectory"), path.string());
     Line line;
+    csv.skip_comments(); // above the header: the scene's record
     if (!csv.next(line)) csv.fail(1, std::string("expected the header line ") + header);
     std::string got;
     for (const std::string& f : line.fields) got += (got.empty() ? "" : ",") + f;
@@ -150,6 +162,22 @@ Trajectory read_trajectory(const std::filesystem::path& states,
     if (diagnostics.empty()) return out;
     out.diagnostics = read_diagnostics(diagnostics);
     return out;
+}
+
+std::optional<SceneRecord> read_scene_record(const std::filesystem::path& states) {
+    std::ifstream in(states, std::ios::binary);
+    std::string first;
+    if (!in || !std::getline(in, first) || !first.starts_with(kSceneRecordPrefix))
+        return std::nullopt;
+    const std::string text = first.substr(std::string_view(kSceneRecordPrefix).size());
+    const nlohmann::json record = nlohmann::json::parse(text, nullptr, false);
+    if (!record.is_object() || !record.contains("source") || !record["source"].is_string() ||
+        !record.contains("content_hash") || !record["content_hash"].is_string())
+        throw SceneError(states.string(), "1:1",
+                         std::string("expected ") + kSceneRecordPrefix +
+                             "{\"source\": ..., \"content_hash\": ...}");
+    return SceneRecord{record["source"].get<std::string>(),
+                       record["content_hash"].get<std::string>()};
 }
 
 std::vector<DiagnosticsRow> read_diagnostics(const std::filesystem::path& diagnostics) {

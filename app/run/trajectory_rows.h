@@ -36,6 +36,14 @@ StateRow state_row(const physics::Model& model, const physics::State& state, int
                    const std::string& name);
 DiagnosticsRow diagnostics_row(const physics::Model& model, const physics::State& state);
 
+// The first line of a states table: the scene it was made from, as a comment that gnuplot and
+// numpy skip (pandas: read_csv(file, comment='#')), so that `tumble plot` finds the masses a
+// body's energy needs without --scene:
+//   # tumble scene {"content_hash":"9f0c...","source":"builtin:lessons/intermediate_axis.json"}
+// "source" is a built-in scene's name or a scene file's absolute path; "content_hash" the scene's
+// (app/scene/content_hash.h, 16 hex digits), to tell whether the file has changed since.
+inline constexpr const char* kSceneRecordPrefix = "# tumble scene ";
+
 inline constexpr const char* kStatesHeader = "step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
 inline constexpr const char* kDiagnosticsHeader =
     "step,t,kinetic,potential,energy,px,py,pz,lx,ly,lz";

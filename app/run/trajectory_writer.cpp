@@ -1,6 +1,9 @@
 #include "app/run/trajectory_writer.h"
 
+#include "app/scene/content_hash.h"
 #include "io/bad_input.h"
+
+#include <nlohmann/json.hpp>
 
 #include "app/run/run_estimate.h"
 #include "app/run/trajectory_rows.h"
@@ -27,6 +30,16 @@ std::FILE* open_or_throw(const io::AtomicFile& file) {
                                  "': " + std::strerror(errno));
     }
     return f;
+}
+
+// {"source": ..., "content_hash": ...} on one line (kSceneRecordPrefix).
+std::string scene_record(const Scene& scene) {
+    std::string source = scene.source;
+    if (!source.starts_with("builtin:") && !source.empty())
+        source = std::filesystem::absolute(source).lexically_normal().string();
+    const nlohmann::json record = {{"source", source},
+                                   {"content_hash", ContentHash::to_hex(scene.content_hash)}};
+    return record.dump();
 }
 
 } // namespace
@@ -67,7 +80,8 @@ TrajectoryWriter::TrajectoryWriter(const std::string& states_path,
                                    ? diagnostics_path_for(interrupted_path_for(states_path))
                                    : interrupted_path_for(diagnostics_path);
     states_file_ = open_or_throw(states_);
-    std::fprintf(states_file_, "%s\n", kStatesHeader);
+    std::fprintf(states_file_, "%s%s\n%s\n", kSceneRecordPrefix, scene_record(scene).c_str(),
+                 kStatesHeader);
     if (diags_) {
         diags_file_ = open_or_throw(*diags_);
         std::fprintf(diags_file_, "%s%s\n", kDiagnosticsHeader, estimate_header.c_str());

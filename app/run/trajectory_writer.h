@@ -1,6 +1,8 @@
 #pragma once
 // Writes a run as two CSV files, each under a temporary name until finish():
-//   <output>                     one row per (sampled step, body):
+//   <output>                     the scene it was made from on its first line
+//                                (app/run/trajectory_rows.h: kSceneRecordPrefix), then
+//                                one row per (sampled step, body):
 //       step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz
 //     x: body origin (m, world); q: body orientation (body -> world); v: centre-of-mass velocity
 //     (m/s, world); w: angular velocity (rad/s, world). %.17g: doubles round-trip exactly.

@@ -1,6 +1,7 @@
 #include "app/scene/camera_rig_reader.h"
 
 #include "app/scene/body_reference.h"
+#include "app/scene/scene_error.h"
 #include "app/scene/scene_fields.h"
 #include "app/scene/scene_values.h"
 
@@ -9,6 +10,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 namespace tumble::app {
 namespace {
@@ -116,6 +120,50 @@ void read_camera_rig(JsonReader json, CameraRig& rig) {
         read_path(*p, rig);
     }
     r.finish();
+}
+
+void read_camera_option(const std::string& text, const std::string& option, CameraRig& rig) {
+    const auto bad = [&]() -> SceneError {
+        return SceneError(option, text,
+                          "expected POSITION:TARGET[:FOV] (metres and degrees, e.g. "
+                          "1,-2,1.5:0,0,1:40), auto or poinsot");
+    };
+    if (text == "auto" || text == "poinsot") {
+        rig.mode = text == "auto" ? CameraRig::Mode::Auto : CameraRig::Mode::Poinsot;
+        rig.auto_direction = glm::dvec3(0.0); // the direction the scene's camera looks from
+        return;
+    }
+    // The ':' parts, each a list of numbers separated by ','.
+    std::vector<std::vector<double>> parts(1);
+    std::string field;
+    for (std::size_t k = 0; k <= text.size(); ++k) {
+        if (k < text.size() && text[k] != ':' && text[k] != ',') {
+            field += text[k];
+            continue;
+        }
+        char* stop = nullptr;
+        const double v = std::strtod(field.c_str(), &stop);
+        if (field.empty() || *stop != '\0' || !std::isfinite(v)) throw bad();
+        parts.back().push_back(v);
+        field.clear();
+        if (k < text.size() && text[k] == ':') parts.emplace_back();
+    }
+    if (parts.size() < 2 || parts.size() > 3 || parts[0].size() != 3 || parts[1].size() != 3 ||
+        (parts.size() == 3 && parts[2].size() != 1))
+        throw bad();
+    std::vector<double> numbers;
+    for (const auto& p : parts) numbers.insert(numbers.end(), p.begin(), p.end());
+    const std::size_t groups = parts.size();
+    const glm::vec3 position(numbers[0], numbers[1], numbers[2]);
+    const glm::vec3 target(numbers[3], numbers[4], numbers[5]);
+    if (glm::length(position - target) == 0.0f)
+        throw SceneError(option, text, "the position and the target coincide");
+    if (groups == 3 && !(numbers[6] > 0.0 && numbers[6] < 179.0))
+        throw SceneError(option, text, "expected a field of view between 0 and 179 degrees");
+    rig.mode = CameraRig::Mode::Fixed;
+    rig.base.position = position;
+    rig.base.target = target;
+    if (groups == 3) rig.base.fov_y_deg = float(numbers[6]);
 }
 
 void resolve_followed_body(CameraRig& rig, const std::vector<std::string>& names,

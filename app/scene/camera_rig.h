@@ -9,6 +9,8 @@
 //           Catmull-Rom tangents, easing in and out at the first and last key)
 //   auto    one fixed camera that keeps every dynamic body in view for the whole run, chosen by
 //           a pre-pass (app/run/auto_camera.h); also what a scene without a camera gets
+//   poinsot one fixed camera that frames Poinsot's construction of render.poinsot at t = 0
+//           (`render --poinsot BODY`, unless --camera is given; app/view/poinsot.h)
 // A camera is a pure function of time and the followed body's position: frame k's camera needs
 // no history, so a still of frame k is the same as frame k of a video.
 #include "render/scene_view.h"
@@ -26,8 +28,9 @@ struct CameraKey {
 
 struct CameraRig {
     // Auto: a fixed camera chosen by a pre-pass over the run (app/run/auto_camera.h), the mode
-    // of a scene that gives no camera; frame_automatically() turns it into Fixed before drawing.
-    enum class Mode { Fixed, Orbit, Follow, Path, Auto };
+    // of a scene that gives no camera; Poinsot: one that frames the construction.
+    // frame_automatically() turns either into Fixed before drawing.
+    enum class Mode { Fixed, Orbit, Follow, Path, Auto, Poinsot };
     Mode mode = Mode::Auto;
     render::Camera base; // the fixed camera; up, fov and clip planes for every mode
 
@@ -54,6 +57,13 @@ struct CameraRig {
 
     bool needs_body() const { return mode == Mode::Follow; }
 };
+
+// A camera given on the command line (`render --camera TEXT`, named `option` in errors) into
+// `rig`: "X,Y,Z:X,Y,Z[:FOV]" is a fixed camera at the first point looking at the second, metres,
+// with a vertical field of view in degrees (else the rig's); "auto" frames every moving body
+// for the whole run; "poinsot" frames Poinsot's construction. Throws SceneError naming the option
+// and the form expected.
+void read_camera_option(const std::string& text, const std::string& option, CameraRig& rig);
 
 // Resolves rig.follow_name against the bodies' names (or an index); throws SceneError naming
 // `file` and the JSON path of the name when no body matches.

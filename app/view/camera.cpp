@@ -49,6 +49,7 @@ render::Camera camera_at(const CameraRig& rig, double t, const glm::dvec3& body)
     switch (rig.mode) {
     case CameraRig::Mode::Fixed:
     case CameraRig::Mode::Auto: // not yet framed (app/run/auto_camera.h): the base camera
+    case CameraRig::Mode::Poinsot:
         break;
     case CameraRig::Mode::Orbit: {
         const double a = rig.start_angle + glm::two_pi<double>() * t / rig.period;

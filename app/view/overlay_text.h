@@ -32,7 +32,9 @@ struct OverlayInfo {
     OverlayEstimate estimate; // a line of its own when on
 };
 
-// Replaces `lines` (reusing their storage) with the overlay text.
-void overlay_lines(const OverlayInfo& info, std::vector<std::string>& lines);
+// Replaces `lines` (reusing their storage) with the overlay text. `compact`, for a small frame
+// or tile (app/view/overlay_layout.h decides): the integrator and step, the time and the energy
+// drift, each line at most 24 characters, plus the estimate's when on.
+void overlay_lines(const OverlayInfo& info, std::vector<std::string>& lines, bool compact = false);
 
 } // namespace tumble::app

@@ -1,16 +1,21 @@
 #pragma once
 // Strip charts in the frame (--chart energy,w_body --chart-body book): one panel per quantity,
-// time along x (the whole run, or a rolling window), stacked in the bottom-right corner, with
-// a title, units and the ends of both axes. The history is sampled at every frame time (so a
-// still of frame k shows what frame k of the video shows), and the y ranges only ever grow, in
-// steps of 1, 2 or 5 x 10^k, so the axes do not twitch from frame to frame. With --compare the
-// tiles share one ChartScale: the same value sits at the same height in every tile.
+// time along x (the whole run, or a rolling window), placed by the overlay layout
+// (app/view/overlay_layout.h). Each panel has a title with the unit and, for a vector, a legend
+// of its x, y and z colours; the y range's ends labelled at the top and bottom of the plot, a
+// 0 line when the range spans 0, and the times at both ends of the time axis. The history is
+// sampled at every frame time (so a still of frame k shows what frame k of the video shows).
+// The y ranges are nice (render/nice_scale.h) and tight: the box holds every sample with less
+// than one step of slack at each end (exactly one where the data ends on a step), and changes
+// only when a sample leaves it, so the axes do not twitch from frame to frame. With --compare
+// the tiles share one ChartScale: the same value sits at the same height in every tile.
 #include "app/scene/chart_quantity.h"
+#include "app/view/overlay_layout.h"
+#include "render/nice_scale.h"
 #include "render/scene_view.h"
 
 #include <cstddef>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace tumble::app {
@@ -44,26 +49,33 @@ class ChartHistory {
     std::vector<double> values_; // [sample][panel][3]
 };
 
-// The y range of each panel: grows to hold every sample it is shown, never shrinks.
+// The y range of each panel: the nice range of every sample taken in so far, made again only
+// when a sample falls outside it. While the samples vary by less than a millionth of their
+// size (a conserved quantity, a component that stays 0) the line is flat, and gets a range of
+// its own size around it (render::nice_range).
 class ChartScale {
   public:
-    explicit ChartScale(std::size_t panels) : ranges_(panels, {0.0, 0.0}), seen_(panels, false) {}
+    explicit ChartScale(std::size_t panels) : panels_(panels) {}
     // Takes in the samples of `history` from `from` on.
     void include(const ChartHistory& history, std::size_t from);
-    std::pair<double, double> range(std::size_t panel) const { return ranges_[panel]; }
+    const render::NiceRange& range(std::size_t panel) const { return panels_[panel].box; }
 
   private:
-    std::vector<std::pair<double, double>> ranges_;
-    std::vector<bool> seen_;
+    struct Panel {
+        double lo = 0.0, hi = 0.0; // of the samples
+        bool seen = false, flat = false;
+        render::NiceRange box;
+    };
+    std::vector<Panel> panels_;
 };
 
-// "Nice" bounds holding [lo, hi]: rounded out to a multiple of a step of 1, 2 or 5 x 10^k, about
-// a fifth of the span (a flat line gets a span of its own size, or 1e-12 around 0).
-std::pair<double, double> nice_range(double lo, double hi);
+// The size of one panel in an image of `width` x `height` pixels with `font`.
+glm::vec2 chart_panel_size(const render::OverlayFont& font, int width, int height);
 
-// Appends the panels to `canvas`, for a frame at time `now` of a run `duration` long, in an image
-// of `width` x `height` pixels.
+// Appends the panels to `canvas`, panel p in boxes[p] (from OverlayLayout::place), for a frame at
+// time `now` of a run `duration` long.
 void draw_charts(const ChartHistory& history, const ChartScale& scale, double now, double duration,
-                 int width, int height, render::Canvas& canvas);
+                 const render::OverlayFont& font, const std::vector<ScreenBox>& boxes,
+                 render::Canvas& canvas);
 
 } // namespace tumble::app

@@ -1,6 +1,7 @@
 #include "app/view/trails.h"
 
 #include "app/view/body_size.h"
+#include "app/view/rod.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,8 @@ void Trails::record(const physics::Model& model, const physics::State& state) {
     count_ = std::min(count_ + 1, capacity_);
 }
 
-void Trails::add(render::Polylines& lines) const {
+void Trails::add(render::SceneView& view) const {
+    render::Polylines& lines = view.lines;
     const std::size_t n = bodies_.size();
     const std::size_t oldest = (head_ + capacity_ - count_) % capacity_;
     auto strip = [&](const std::vector<glm::vec3>& points, std::size_t i, glm::vec3 colour,
@@ -55,9 +57,16 @@ void Trails::add(render::Polylines& lines) const {
             lines.add(points[slot * n + i], glm::vec4(colour, 0.9f * age));
         }
     };
+    const std::size_t newest = (head_ + capacity_ - 1) % capacity_;
     for (std::size_t i = 0; i < n; ++i) {
         strip(centres_, i, colours_[i], 3.0f);
-        if (axis_ >= 0) strip(tips_, i, glm::mix(colours_[i], glm::vec3(1.0f), 0.5f), 2.0f);
+        if (axis_ < 0) continue;
+        const glm::vec3 colour = glm::mix(colours_[i], glm::vec3(1.0f), 0.5f);
+        strip(tips_, i, colour, 2.0f);
+        // The traced axis itself, from the centre to the trail's newest point, so the trail
+        // hangs from something (with or without --axes).
+        view.instances.push_back(
+            rod(centres_[newest * n + i], tips_[newest * n + i], 0.025f * reach_[i], colour));
     }
 }
 

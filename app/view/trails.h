@@ -2,8 +2,9 @@
 // Trails (--trails): the path of each dynamic body's centre of mass over the last few seconds,
 // fading with age, in the body's colour; optionally (--trail-axis x|y|z) also the path of the
 // tip of one of its own axes, which shows how it turns (a body axis traces a cone as a top
-// precesses; the middle axis of a flipping book swings through half a turn). Sampled at every
-// frame time into a ring of fixed size: memory is bodies x frames in the window.
+// precesses; the middle axis of a flipping book swings through half a turn), with that axis
+// drawn as a rod out to the tip in the trail's colour, so the trail hangs from it. Sampled at
+// every frame time into a ring of fixed size: memory is bodies x frames in the window.
 #include "app/scene/scene.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -21,7 +22,8 @@ class Trails {
     Trails(const Scene& scene, const physics::Model& model, const physics::State& initial,
            std::size_t frames, int axis);
     void record(const physics::Model& model, const physics::State& state);
-    void add(render::Polylines& lines) const;
+    // The trails into view.lines and the traced axes' rods into view.instances.
+    void add(render::SceneView& view) const;
 
   private:
     std::vector<int> bodies_;        // the dynamic bodies

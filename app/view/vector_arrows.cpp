@@ -1,6 +1,7 @@
 #include "app/view/vector_arrows.h"
 
 #include "app/view/body_size.h"
+#include "app/view/rod.h"
 
 #include "physics/diagnostics.h"
 #include "physics/rigid_body.h"
@@ -14,45 +15,29 @@
 namespace tumble::app {
 namespace {
 
-constexpr double kReach = 3.0; // arrow length at the reference magnitude, in body sizes
+constexpr double kOmegaReach = 3.0, kMomentumReach = 4.0; // at the reference, in body sizes
 constexpr double kTwoPi = 6.283185307179586;
-constexpr float kShaft = 0.045f;                         // shaft radius, in body sizes
-constexpr float kHeadRadius = 0.11f, kHeadLength = 0.3f; // in body sizes
-const glm::vec3 kOmegaColor(0.96f, 0.69f, 0.25f);        // amber
-const glm::vec3 kMomentumColor(0.09f, 0.65f, 0.78f);     // cyan
+constexpr float kHeadRadius = 0.11f, kHeadLength = 0.3f;      // in body sizes
+constexpr float kOmegaShaft = 0.045f, kMomentumShaft = 0.03f; // shaft radii, in body sizes
+const glm::vec3 kOmegaColor(0.96f, 0.69f, 0.25f);             // amber
+const glm::vec3 kMomentumColor(0.86f, 0.24f, 0.78f); // magenta: apart from the axes' red, green
+                                                     // and blue, and from blue and cyan bodies
 
-// A rotation taking +z to the unit vector d.
-glm::mat4 aim_z_at(const glm::vec3& d) {
-    const glm::vec3 z(0.0f, 0.0f, 1.0f);
-    const glm::vec3 axis = glm::cross(z, d);
-    const float s = glm::length(axis), c = glm::dot(z, d);
-    if (s < 1e-6f)
-        return c > 0.0f ? glm::mat4(1.0f)
-                        : glm::rotate(glm::mat4(1.0f), 3.14159265f, glm::vec3(1, 0, 0));
-    return glm::rotate(glm::mat4(1.0f), std::atan2(s, c), axis / s);
-}
-
-// Shaft (unit cylinder: radius 1, z in [-1, 1]) and head (unit cone: base at z = 0, apex at
-// z = 1) of an arrow of `length` metres from `origin` along the unit vector `dir`.
+// Shaft (unit cylinder) and head (unit cone: base at z = 0, apex at z = 1) of an arrow of
+// `length` metres from `origin` along the unit vector `dir`.
 void push_arrow(render::SceneView& view, render::MeshId cone, const glm::vec3& origin,
-                const glm::vec3& dir, float length, float size, const glm::vec3& color) {
+                const glm::vec3& dir, float length, float size, float shaft_radius,
+                const glm::vec3& color) {
     const float head = std::min(kHeadLength * size, 0.5f * length);
     const float shaft = length - head;
-    const glm::mat4 frame = glm::translate(glm::mat4(1.0f), origin) * aim_z_at(dir);
-    render::Instance s;
-    s.mesh = render::MeshKind::Cylinder;
-    s.transform =
-        frame * glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 0.5f * shaft)) *
-        glm::scale(glm::mat4(1.0f), glm::vec3(kShaft * size, kShaft * size, 0.5f * shaft));
-    s.color = color;
-    s.material = render::Material{0.35f, 0.5f, 0.0f};
-    render::Instance h = s;
+    render::Instance h = rod(origin, origin + shaft * dir, shaft_radius * size, color);
+    view.instances.push_back(h);
     h.mesh = render::MeshKind::Custom;
     h.mesh_id = cone;
     h.transform =
-        frame * glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, shaft)) *
+        glm::translate(glm::mat4(1.0f), origin) * aim_z_at(dir) *
+        glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, shaft)) *
         glm::scale(glm::mat4(1.0f), glm::vec3(kHeadRadius * size, kHeadRadius * size, head));
-    view.instances.push_back(s);
     view.instances.push_back(h);
 }
 
@@ -71,7 +56,7 @@ VectorArrows::VectorArrows(const physics::Model& model, const physics::State& in
         const double w_ref = std::max(initial.w[i].norm(), kTwoPi);
         const double l_ref =
             std::max(physics::spin_angular_momentum(model, initial, i).norm(), i_max * kTwoPi);
-        scale_[std::size_t(i)] = {size, kReach * size / w_ref, kReach * size / l_ref};
+        scale_[std::size_t(i)] = {size, kOmegaReach * size / w_ref, kMomentumReach * size / l_ref};
     }
 }
 
@@ -87,15 +72,17 @@ void VectorArrows::add(const physics::Model& model, const physics::State& state,
         const float size = float(sc.size);
         // An arrow shorter than its own head says nothing: below that it is left out.
         if (const double len = sc.per_w * w.norm(); len > kHeadLength * sc.size)
-            push_arrow(view, cone, origin, to_glm(w.normalized()), float(len), size, kOmegaColor);
+            push_arrow(view, cone, origin, to_glm(w.normalized()), float(len), size, kOmegaShaft,
+                       kOmegaColor);
         if (const double len = sc.per_l * l.norm(); len > kHeadLength * sc.size)
-            push_arrow(view, cone, origin, to_glm(l.normalized()), float(len), size,
+            push_arrow(view, cone, origin, to_glm(l.normalized()), float(len), size, kMomentumShaft,
                        kMomentumColor);
     }
 }
 
-const char* VectorArrows::legend() {
-    return "arrows: w amber, L = I_w w cyan";
+std::vector<LegendItem> VectorArrows::legend(bool compact) {
+    return {{glm::vec4(kOmegaColor, 1.0f), compact ? "w" : "w: angular velocity"},
+            {glm::vec4(kMomentumColor, 1.0f), compact ? "L" : "L = I_w w: angular momentum"}};
 }
 
 } // namespace tumble::app

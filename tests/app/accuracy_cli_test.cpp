@@ -22,6 +22,7 @@ double worst_orientation_error(const std::string& csv, const std::string& scene_
     const exact::ExactBodyMotion oracle(sim.model, sim.state, book);
     std::istringstream in(csv);
     std::string line;
+    std::getline(in, line); // the scene's record: # tumble scene {...}
     std::getline(in, line); // header: step,t,body,name,x,y,z,qw,qx,qy,qz,...
     double worst = 0.0;
     int rows = 0;

@@ -46,7 +46,8 @@ std::vector<std::string> split(const std::string& line) {
 std::vector<std::map<std::string, std::string>> read_table(const std::filesystem::path& p) {
     std::istringstream in(read_text(p));
     std::string line;
-    std::getline(in, line);
+    while (std::getline(in, line) && line.starts_with("#")) { // a states table's scene record
+    }
     const std::vector<std::string> header = split(line);
     std::vector<std::map<std::string, std::string>> rows;
     while (std::getline(in, line)) {

@@ -79,10 +79,12 @@ TEST(Interrupts, TheNextRunRemovesWhatAKilledRunLeftBehind) {
               std::vector<std::string>{".other.mp4." + std::to_string(pid) + ".partial"});
 }
 
+// The lines of a CSV but its comments (a states table's first line records its scene).
 std::vector<std::string> lines_of(const fs::path& csv) {
     std::vector<std::string> out;
     std::ifstream in(csv);
-    for (std::string line; std::getline(in, line);) out.push_back(line);
+    for (std::string line; std::getline(in, line);)
+        if (!line.starts_with("#")) out.push_back(line);
     return out;
 }
 

@@ -25,7 +25,9 @@ std::string reference_states(const fs::path& dir) {
     const CliResult r = run_tumble(dir, kRun + " -o ref.csv --diagnostics none");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     const std::string text = read_text(dir / "ref.csv");
-    EXPECT_TRUE(text.starts_with("step,t,body,")) << text.substr(0, 80);
+    // The scene's record, then the header (app/run/trajectory_rows.h).
+    EXPECT_TRUE(text.starts_with("# tumble scene {")) << text.substr(0, 80);
+    EXPECT_NE(text.find("\nstep,t,body,"), std::string::npos) << text.substr(0, 160);
     fs::remove(dir / "ref.csv");
     return text;
 }

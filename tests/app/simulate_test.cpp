@@ -10,11 +10,14 @@
 namespace tumble::test {
 namespace {
 
+// The rows of a CSV, header first, without its comments (a states table's first line records
+// its scene: app/run/trajectory_rows.h).
 std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& p) {
     std::vector<std::vector<std::string>> rows;
     std::istringstream in(read_text(p));
     std::string line;
     while (std::getline(in, line)) {
+        if (line.starts_with("#")) continue;
         std::vector<std::string> cells;
         std::string cell;
         std::istringstream ls(line);

@@ -24,6 +24,7 @@ std::vector<TopRow> top_rows(const std::string& csv) {
     std::vector<TopRow> rows;
     std::istringstream in(csv);
     std::string line;
+    std::getline(in, line); // the scene's record: # tumble scene {...}
     std::getline(in, line); // header
     while (std::getline(in, line)) {
         std::vector<double> v;

@@ -55,6 +55,8 @@ TEST(ImageCompare, SmallChangeWithinTolerancePasses) {
     EXPECT_TRUE(r.identical);
     EXPECT_TRUE(r.matches);
     EXPECT_EQ(r.max_channel_delta, 1); // still reported, for people tuning tolerances
+    EXPECT_TRUE(r.summary.starts_with("identical within the tolerance")) << r.summary;
+    EXPECT_EQ(compare_images(a, a).summary, "identical, bit for bit");
 }
 
 TEST(ImageCompare, BlobOfChangesIsCountedExactlyAndShownRed) {
@@ -98,6 +100,13 @@ TEST(ImageCompare, OnePixelShiftOfAnAntialiasedEdgeIsAntialiasing) {
     EXPECT_TRUE(r.matches);
     EXPECT_FALSE(r.identical);
     EXPECT_TRUE(is(r.diff, 8, 5, 255, 255, 0)); // yellow
+    // A match is worded as one (issue 30): "0 pixels differ ... max channel delta 127" read as a
+    // contradiction of the bit-identical promise.
+    EXPECT_TRUE(r.summary.starts_with("matches, not bit-identical: 0 pixels differ (0 allowed)"))
+        << r.summary;
+    EXPECT_NE(r.summary.find("24 only at anti-aliased edges, which do not count"),
+              std::string::npos)
+        << r.summary;
 
     CompareOptions no_aa;
     no_aa.detect_antialiasing = false;
