@@ -4,7 +4,7 @@
 // (MuJoCo's way): a trajectory's states are NumPy views of flat vectors, frames one uint8 array.
 #include "app/python/bindings.h"
 #include "app/python/call_scope.h"
-#include "render/frame_sink.h"
+#include "render/video_sink.h"
 
 PYBIND11_MODULE(_tumble, m) {
     namespace py = pybind11;

@@ -116,7 +116,9 @@ void frame_poinsot(Scene& scene, const Timeline& tl) {
     const double aspect = double(scene.render.width) / double(scene.render.height);
     const float fov = rig.base.fov_y_deg;
     const double margin = std::max(rig.auto_margin, 0.33);
-    rig.base = fit(Basis(f.direction, f.up, fov, aspect, margin), f.up, samples);
+    glm::dvec3 lo(kInf), hi(-kInf); // the centres' box, where the fit starts
+    for (const Sample& s : samples) lo = glm::min(lo, s.x), hi = glm::max(hi, s.x);
+    rig.base = fit(Basis(f.direction, f.up, fov, aspect, margin), f.up, samples, lo, hi);
     rig.base.fov_y_deg = fov;
     rig.mode = CameraRig::Mode::Fixed;
 }
