@@ -41,6 +41,7 @@ std::vector<Row> read_states(const std::string& csv) {
     std::vector<Row> rows;
     std::istringstream in(csv);
     std::string line;
+    std::getline(in, line); // the scene record, "# tumble scene {...}"
     std::getline(in, line); // step,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz
     while (std::getline(in, line)) {
         std::vector<std::string> f;

@@ -43,14 +43,14 @@ const std::string kSuite = R"({
                           "quantities": {"orientation": 1e-12}}]}]
 })";
 
-// The CSV's rows by step (the header and the first two columns kept out: step -> the rest).
+// The CSV's rows by step: step -> the row (the header and a '#' scene record, which `tumble
+// simulate` writes first, kept out).
 std::map<long, std::string> rows_by_step(const std::string& csv) {
     std::map<long, std::string> rows;
     std::istringstream lines(csv);
-    std::string line;
-    std::getline(lines, line); // header
-    while (std::getline(lines, line))
-        if (!line.empty()) rows[std::stol(line.substr(0, line.find(',')))] = line;
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty() && line[0] != '#' && line.rfind("step,", 0) != 0)
+            rows[std::stol(line.substr(0, line.find(',')))] = line;
     return rows;
 }
 

@@ -33,9 +33,10 @@ def tumble(*args, check=True):
 
 
 def read_states(path):
-    """`tumble simulate`'s states CSV as {name: column}, the body names as a list of rows'."""
+    """`tumble simulate`'s states CSV as {name: column}, the body names as a list of rows'.
+    Lines starting with '#' (the scene record on the first line) are not rows."""
     with open(path, newline="") as f:
-        reader = csv.reader(f)
+        reader = csv.reader(line for line in f if not line.startswith("#"))
         header = next(reader)
         rows = list(reader)
     cols = {h: [r[i] for r in rows] for i, h in enumerate(header)}
