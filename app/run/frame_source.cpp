@@ -1,6 +1,8 @@
 #include "app/run/frame_source.h"
 
+#include "app/run/prepare_run.h"
 #include "app/view/view_builder.h"
+#include "io/interrupt.h"
 #include "physics/step.h"
 
 #include <algorithm>
@@ -56,16 +58,18 @@ OverlayInfo FrameSource::overlay_info() const {
 
 // What the panels keep clear of: the bodies, arrows and construction on the screen at frames
 // spread over the whole run (a pre-pass of the physics from t = 0, as camera.auto's: the same
-// for a still, a video or a shard), until the run ends or diverges.
+// for a still, a video or a shard), until the run ends or diverges. Its memory is 48 samples'
+// boxes whatever the duration; Ctrl-C stops it within a frame (io::Interrupted).
 std::vector<ScreenBox> FrameSource::swept_boxes() const {
     constexpr std::int64_t kSamples = 48;
-    Simulation pre = make_simulation(scene_, timeline_.h);
+    Simulation pre = start_run(scene_, timeline_, {1, false}); // the run's own steps, no estimate
     std::vector<ScreenBox> boxes;
     render::SceneView view;
     const std::int64_t frames = timeline_.frames,
                        every = std::max<std::int64_t>(1, frames / kSamples);
     try {
         for (std::int64_t k = 0; k < frames; ++k) {
+            io::InterruptGuard::stop_if_requested("the overlay layout's pre-pass");
             if (k > 0)
                 for (int s = 0; s < timeline_.steps_per_frame; ++s) pre.step();
             if (k % every != 0 && k != frames - 1) continue;

@@ -78,6 +78,23 @@ TEST(InterruptStages, TheAutoCameraPrePassStops) {
     EXPECT_NE(err.find("during camera.auto's pre-pass"), std::string::npos) << err;
 }
 
+// A fixed camera (no camera.auto) and the overlay: the layout's pre-pass, which looks where the
+// bodies go over the whole run before the first frame to keep the panels off them.
+TEST(InterruptStages, TheOverlayLayoutPrePassStops) {
+    const auto dir = scratch_dir();
+    write_text(dir / "balls.json", balls(1e12));
+    write_text(dir / "out.mp4", "a video from before");
+    EXPECT_EQ(interrupt_after_start(dir,
+                                    "render balls.json --camera 2,-3,2:0.45,0.45,0.5 --overlay "
+                                    "-o out.mp4 --overwrite",
+                                    SIGINT),
+              130);
+    EXPECT_EQ(read_text(dir / "out.mp4"), "a video from before");
+    EXPECT_EQ(files_besides(dir, {"balls.json", "out.mp4"}), std::vector<std::string>{});
+    const std::string err = read_text(dir / "stderr.txt");
+    EXPECT_NE(err.find("during the overlay layout's pre-pass"), std::string::npos) << err;
+}
+
 TEST(InterruptStages, AutosPilotRunsStop) {
     const auto dir = scratch_dir();
     write_text(dir / "book.json", kAutoBook);
