@@ -8,11 +8,11 @@
 #include <sstream>
 
 namespace tumble::physics {
-namespace {
-
 void require(bool ok, int body, const char* field, const std::string& what) {
     if (!ok) throw ModelError(body, field, what);
 }
+
+namespace {
 
 std::string vec_str(const Vec3& v) {
     std::ostringstream s;

@@ -50,6 +50,10 @@ struct ModelError : std::runtime_error {
     std::string field;
 };
 
+// Throws ModelError(body, field, what) unless `ok` (the checks of build.cpp and
+// build_contacts.cpp).
+void require(bool ok, int body, const char* field, const std::string& what);
+
 Model build_model(const WorldDef& world, const std::vector<BodyDef>& bodies);
 State initial_state(const Model& model, const std::vector<BodyDef>& bodies);
 

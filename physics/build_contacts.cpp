@@ -5,10 +5,6 @@
 namespace tumble::physics {
 namespace {
 
-void require(bool ok, int body, const char* field, const std::string& what) {
-    if (!ok) throw ModelError(body, field, what);
-}
-
 const TriangleMesh& checked_mesh(const BodyDef& b, int i) {
     require(b.mesh != nullptr, i, "file", "a mesh body needs its triangles");
     if (auto why = check_closed_mesh(*b.mesh)) throw ModelError(i, "file", *why);

@@ -2,6 +2,7 @@
 #include "physics/can_touch.h"
 
 #include "physics/build.h"
+#include "physics/math.h"
 #include "physics/model.h"
 
 #include <algorithm>
@@ -11,8 +12,6 @@
 
 namespace tumble::physics {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What the test needs of one body, from its definition (before the first contact).
 struct Flight {

@@ -9,14 +9,13 @@
 #include "physics/closest_points.h"
 #include "physics/collide.h"
 #include "physics/gjk.h"
+#include "physics/math.h"
 
 #include <cmath>
 #include <limits>
 
 namespace tumble::physics {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // True if the hull is an axis-aligned box centred at the origin (make_box_hull()).
 bool is_box(const ConvexHull& h) {

@@ -4,11 +4,17 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
+
 namespace tumble::physics {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
+
+// No bound: the reach of a plane, the separation before any axis is tried, the time to a contact
+// that cannot happen.
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // [a]x = [[0, -az, ay], [az, 0, -ax], [-ay, ax, 0]]
 inline Mat3 skew(const Vec3& a) {

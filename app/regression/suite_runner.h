@@ -10,15 +10,10 @@
 
 namespace tumble::app {
 
-struct RunOptions {
-    int jobs = 1;
-    // Shell-style patterns (* ? [...]) matched against check names and scene names; a check is
-    // selected when any matches. Empty: every check.
-    std::vector<std::string> filters;
-};
-
-// The checks of `suite` that `filters` select, as (scene index, check) lists. Throws io::BadInput
-// naming a filter that selects nothing, or when the suite has no check at all.
+// The checks of `suite` that `filters` select, as (scene index, check) lists. A filter is a
+// shell-style pattern (* ? [...]) matched against check names and scene names; a check is selected
+// when any matches, and every check when there is no filter. Throws io::BadInput naming a filter
+// that selects nothing, or when the suite has no check at all.
 struct Selection {
     std::vector<std::vector<const ImageCheck*>> images; // by scene index
     std::vector<std::vector<const StateCheck*>> states;

@@ -19,7 +19,7 @@
 namespace tumble::app {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using physics::kInf;
 
 glm::dvec3 to_d(const physics::Vec3& v) {
     return {v.x(), v.y(), v.z()};

@@ -1,4 +1,5 @@
 #include "app/run/swept_spheres.h"
+#include "physics/math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,7 @@
 namespace tumble::app {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using physics::kInf;
 
 struct Point {
     double a, b;

@@ -1,7 +1,7 @@
 // report.md: the study as a person reads it, ending with the recommendation table.
+#include "app/study/auto_check.h"
 #include "app/study/metrics.h"
 #include "app/study/plots.h"
-#include "app/study/auto_check.h"
 #include "app/study/report.h"
 #include "physics/integrator.h"
 
@@ -30,13 +30,6 @@ bool is_skipped(const Results& r, const std::string& problem, const std::string&
     for (const Skip& k : r.skipped)
         if (k.problem == problem && k.integrator == integrator) return true;
     return false;
-}
-
-std::vector<std::string> integrator_names() {
-    std::vector<std::string> names;
-    for (const physics::IntegratorInfo& info : physics::integrators())
-        names.emplace_back(info.name);
-    return names;
 }
 
 void header(std::ostringstream& o, const Results& r) {

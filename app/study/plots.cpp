@@ -55,13 +55,6 @@ std::string series(std::ostringstream& o, const std::vector<std::string>& titles
     return plot + "\n";
 }
 
-std::vector<std::string> integrator_names() {
-    std::vector<std::string> names;
-    for (const physics::IntegratorInfo& info : physics::integrators())
-        names.emplace_back(info.name);
-    return names;
-}
-
 // (x, headline error) of one (problem, integrator), diverged rows left out.
 std::vector<std::pair<double, double>> rows_xy(const Results& r, const std::string& problem,
                                                const std::string& integrator, bool cost) {

@@ -1,6 +1,7 @@
 // study.csv and study.json (every row of the study), and the machine and build descriptions.
 #include "app/study/report.h"
 #include "io/atomic_file.h"
+#include "physics/integrator.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,13 @@ std::string sci(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*e", digits, v);
     return buf;
+}
+
+std::vector<std::string> integrator_names() {
+    std::vector<std::string> names;
+    for (const physics::IntegratorInfo& info : physics::integrators())
+        names.emplace_back(info.name);
+    return names;
 }
 
 std::string describe_machine() {

@@ -27,7 +27,7 @@ struct Results {
     std::string energy_problem; // the problem and step of the energy-against-time plot
     double energy_dt = 0.0, energy_t_end = 0.0;
     std::vector<EnergyTrace> energy;
-    bool auto_checked = false;         // `--auto`: the plans of "auto" checked (auto_check.h)
+    bool auto_checked = false; // `--auto`: the plans of "auto" checked (auto_check.h)
     std::vector<AutoCase> auto_cases;
     double seconds_grid = 0.0, seconds_stability = 0.0, seconds_contacts = 0.0;
     double seconds_total = 0.0;
@@ -35,6 +35,9 @@ struct Results {
     std::string build;   // compiler, build type, flags
     std::string plotter; // gnuplot's version line
 };
+
+// Every integrator's name, in physics' order: the order of the report's tables and plots' lines.
+std::vector<std::string> integrator_names();
 
 // Machine and build descriptions for the report.
 std::string describe_machine();

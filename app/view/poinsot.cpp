@@ -2,6 +2,7 @@
 
 #include "app/scene/scene_check.h"
 #include "app/view/body_size.h"
+#include "app/view/to_glm.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -16,9 +17,6 @@ namespace {
 using physics::Quat;
 using physics::Vec3;
 
-glm::vec3 to_glm(const Vec3& v) {
-    return {float(v.x()), float(v.y()), float(v.z())};
-}
 glm::dvec3 to_d(const Vec3& v) {
     return {v.x(), v.y(), v.z()};
 }

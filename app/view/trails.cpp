@@ -2,18 +2,12 @@
 
 #include "app/view/body_size.h"
 #include "app/view/rod.h"
+#include "app/view/to_glm.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace tumble::app {
-namespace {
-
-glm::vec3 to_glm(const physics::Vec3& v) {
-    return {float(v.x()), float(v.y()), float(v.z())};
-}
-
-} // namespace
 
 Trails::Trails(const Scene& scene, const physics::Model& model, const physics::State& initial,
                std::size_t frames, int axis)

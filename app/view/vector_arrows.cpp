@@ -2,6 +2,7 @@
 
 #include "app/view/body_size.h"
 #include "app/view/rod.h"
+#include "app/view/to_glm.h"
 
 #include "physics/diagnostics.h"
 #include "physics/rigid_body.h"
@@ -39,10 +40,6 @@ void push_arrow(render::SceneView& view, render::MeshId cone, const glm::vec3& o
         glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, shaft)) *
         glm::scale(glm::mat4(1.0f), glm::vec3(kHeadRadius * size, kHeadRadius * size, head));
     view.instances.push_back(h);
-}
-
-glm::vec3 to_glm(const physics::Vec3& v) {
-    return glm::vec3(float(v.x()), float(v.y()), float(v.z()));
 }
 
 } // namespace
