@@ -1,3 +1,25 @@
+# Unity builds (issue 27.2): each library's .cpp files compiled in batches of
+# TUMBLE_UNITY_BATCH, one translation unit per batch (CMake's UNITY_BUILD). Most of a file's compile
+# time is the templates its headers instantiate (Eigen, nlohmann-json, CLI11, glm), not parsing
+# them; a batch instantiates each once. Measured with scripts/bench-build.sh (docs/engineering.md:
+# clean Release `tumble`, 2 cores): this is what took the build below 200 s; precompiled headers,
+# tried first, bought nothing (432 s against 424 and 470 s without) and are not used.
+# A batch is one translation unit, so two files of a library may not define the same name in an
+# anonymous namespace (the build fails if they do: share it in a header instead). It also means a
+# file may compile only because a file before it in the batch included what it forgot:
+# `-DTUMBLE_UNITY_BUILD=OFF` (the debug preset) compiles each file alone and catches that.
+# What a file compiles to does not change: the same code, the same flags (-ffp-contract=off); the
+# pinned hashes and goldens of the suite hold in both.
+option(TUMBLE_UNITY_BUILD "Compile each library's files in batches (faster clean builds)" ON)
+set(TUMBLE_UNITY_BATCH 8 CACHE STRING "Files per unity batch (TUMBLE_UNITY_BUILD)")
+
+function(tumble_unity target)
+  if(TUMBLE_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+                          UNITY_BUILD_BATCH_SIZE ${TUMBLE_UNITY_BATCH})
+  endif()
+endfunction()
+
 # tumble_library(<target> <folder> [sources...])
 # A static library made of the .cpp files directly in <folder> (relative to the source root),
 # whose headers, and only those, are visible as "<folder>/name.h" to the library itself and to
@@ -9,10 +31,12 @@
 function(tumble_library target folder)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${folder}/*.cpp)
   add_library(${target} STATIC ${sources} ${ARGN})
+  tumble_unity(${target})
   tumble_expose_headers(${target} ${folder})
   # The Python module's copy (cmake/TumblePython.cmake, app/python/CMakeLists.txt links it).
   if(TUMBLE_PYTHON AND target IN_LIST TUMBLE_PYTHON_LIBRARIES)
     add_library(${target}_pic STATIC EXCLUDE_FROM_ALL ${sources} ${ARGN})
+    tumble_unity(${target}_pic)
     set_target_properties(${target}_pic PROPERTIES POSITION_INDEPENDENT_CODE ON
                           CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
     # Its flags and links are the library's, known once the folder's CMakeLists.txt has run.
