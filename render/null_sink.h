@@ -1,6 +1,6 @@
 #pragma once
 // The output "null": frames are checked and counted, none is kept. The baseline that shows what a
-// real sink costs (`tumble render -o null --stats`, `tumble bench-render`).
+// real sink costs (`tumble render -o null --stats`, bench/render/render_bench).
 #include "render/frame_sink.h"
 
 namespace tumble::render {

@@ -16,7 +16,7 @@ sharp_top.obj  the lessons' top (docs/lessons/05-top-precession.md): the same so
 set_square.obj  the inertia-tensor lesson's set square (docs/lessons/07-inertia-tensor.md): a
          30-60-90 drafting triangle 1 cm thick, the right angle at the origin, legs 30 cm along x
          and 30 tan(30 degrees) cm along y, z from -0.5 to 0.5 cm. Convex, with products of inertia
-         in its own axes; tests/app/lesson_inertia_tensor_test.cpp checks its mass properties
+         in its own axes; tests/lessons/lesson_inertia_tensor_test.cpp checks its mass properties
          against the triangle's closed forms and a sum over point masses.
 Faces are wound counter-clockwise seen from outside; indices are 1-based (OBJ).
 """

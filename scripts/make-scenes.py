@@ -9,6 +9,9 @@ tower_ball       a tower of crossed bars knocked over by a heavy ball
 newtons_cradle   five steel balls on a frictionless track between two elastic end walls
 sphere_rain      issue 4's benchmark scene, n = 10 (1000 spheres), columns shifted by its hash
 sphere_columns   the same with the shift set to zero: a column-stacking test
+spheres1000      1000 floating, spinning spheres that never touch: the render benchmark's scene
+                 of many bodies (bench/render/render_bench.cpp), written to bench/scenes/, not
+                 built in
 The hand-written scenes (default, spinning_top, tossed_book) are not generated.
 """
 import json
@@ -24,8 +27,8 @@ def r6(x):
     return round(x, 6)
 
 
-def write(name, scene):
-    path = os.path.join(OUT, name + ".json")
+def write(name, scene, out=OUT):
+    path = os.path.join(out, name + ".json")
     bodies = scene.pop("bodies")
     text = json.dumps(scene, indent=2)[:-2]  # drop the closing "\n}"
     text += ',\n  "bodies": [\n' + ",\n".join("    " + json.dumps(b) for b in bodies) + "\n  ]\n}\n"
@@ -190,6 +193,28 @@ def sphere_rain(shifted, n=10):
             "bodies": bodies}
 
 
+def spheres1000():
+    """1000 spheres in a 10 x 10 x 10 lattice above a ground, floating (gravity_scale 0) and each
+    spinning about its own axis, drifting together so nothing ever touches. The camera orbits."""
+    colours = ["#c0392b", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#e67e22"]
+    g = lambda x: float(format(x, "g"))  # 6 significant digits, as the scene always had
+    bodies = [{"name": "ground", "shape": {"type": "plane", "extent": 40},
+               "color": [0.82, 0.82, 0.8]}]
+    for i in range(1000):
+        a, b, c = i % 10, (i // 10) % 10, i // 100
+        bodies.append({"shape": {"type": "sphere", "radius": 0.17}, "gravity_scale": 0,
+                       "position": [g(-2.7 + 0.6 * a), g(-2.7 + 0.6 * b), g(0.5 + 0.45 * c)],
+                       "velocity": [0, 0, 0.02],
+                       "angular_velocity": [g(0.3 * (a - 5)), g(0.2 * (b - 5)), 1.5],
+                       "color": colours[(a + b + c) % 6]})
+    return {"format_version": 1, "title": "1000 spheres (benchmark)",
+            "world": {"duration": 10},
+            "render": {"camera": {"position": [9, -12, 7], "target": [0, 0, 2.4], "fov_deg": 45,
+                                  "orbit": {"period": 40}},
+                       "light": {"direction": [-0.5, 0.4, -1.0], "ambient": 0.3}},
+            "bodies": bodies}
+
+
 def main():
     write("bouncing_balls", bouncing_balls())
     write("dominoes", dominoes())
@@ -197,6 +222,7 @@ def main():
     write("newtons_cradle", newtons_cradle())
     write("sphere_rain", sphere_rain(True))
     write("sphere_columns", sphere_rain(False))
+    write("spheres1000", spheres1000(), os.path.join(HERE, "..", "bench", "scenes"))
 
 
 if __name__ == "__main__":

@@ -37,9 +37,10 @@ test_packages=(
   # browser (headless Chromium: screenshot and DOM), the JUnit file validated against the schema CI
   # tools read (xmllint), the JSON Schemas checked by a real validator (Python's jsonschema).
   chromium libxml2-utils python3-jsonschema
-  # The cluster test starts a real single-node Slurm (tests/cluster/slurm_test.sh, docs/cluster.md):
-  # Debian's slurm-wlm (slurmctld, slurmd, sbatch) and munge, its authentication daemon, with a
-  # free port found by `ss` (iproute2). Only the test runs them, each stopped by its process id.
+  # The cluster test starts a real single-node Slurm (tests/app/cluster/slurm_test.sh,
+  # docs/cluster.md): Debian's slurm-wlm (slurmctld, slurmd, sbatch) and munge, its authentication
+  # daemon, with a free port found by `ss` (iproute2). Only the test runs them, each stopped by its
+  # process id.
   slurm-wlm munge iproute2
   # CPack's DEB generator (Package.BuildsTheDeb) runs `file` to find the binaries whose libraries
   # dpkg-shlibdeps (dpkg-dev, from build-essential) names in Depends.

@@ -14,11 +14,11 @@ int main(int argc, char** argv) {
     CLI::App app{"tumble: rigid-body dynamics rendered headlessly to video or PNG"};
     app.require_subcommand(0, 1);
     const std::vector<Subcommand> commands = {
-        add_version_flag(app),     add_render_command(app),  add_bench_render_command(app),
-        add_simulate_command(app), add_explain_command(app), add_scenes_command(app),
-        add_test_command(app),     add_diff_command(app),    add_study_command(app),
-        add_schema_command(app),   add_plot_command(app),    add_join_command(app),
-        add_shards_command(app),   add_sweep_command(app),
+        add_version_flag(app),    add_render_command(app), add_simulate_command(app),
+        add_explain_command(app), add_scenes_command(app), add_test_command(app),
+        add_diff_command(app),    add_study_command(app),  add_schema_command(app),
+        add_plot_command(app),    add_join_command(app),   add_shards_command(app),
+        add_sweep_command(app),
     };
     try {
         app.parse(argc, argv);

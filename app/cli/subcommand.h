@@ -15,7 +15,6 @@ struct Subcommand {
 };
 
 Subcommand add_render_command(CLI::App& app); // render (and render --compare)
-Subcommand add_bench_render_command(CLI::App& app);
 Subcommand add_simulate_command(CLI::App& app);
 Subcommand add_explain_command(CLI::App& app);
 Subcommand add_scenes_command(CLI::App& app);

@@ -2,8 +2,8 @@
 // A suite run as JUnit XML, the format CI servers read (GitLab's artifacts:reports:junit,
 // Jenkins' junit step, GitHub actions that publish test results): one <testsuite> per scene, one
 // <testcase> per check, a <failure> carrying the numbers in its message. It follows the schema
-// of the Jenkins xUnit plugin (junit-10.xsd), which pytest also writes to; tests/app checks it
-// with xmllint against tests/data/junit.xsd, which states that schema's rules.
+// of the Jenkins xUnit plugin (junit-10.xsd), which pytest also writes to; tests/app/regression
+// checks it with xmllint against tests/data/junit.xsd, which states that schema's rules.
 #include "app/regression/check_result.h"
 
 #include <filesystem>

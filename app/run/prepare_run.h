@@ -1,7 +1,7 @@
 #pragma once
 // One way to prepare a run (docs/architecture.md, "The flow of one run"). Every command that runs
-// a scene (render, simulate, explain, compare, bench-render, `tumble test`, checkpoints, shards,
-// the Python module) goes scene -> RunPlan -> Simulation here, so that one scene gives one
+// a scene (render, simulate, explain, compare, the render benchmark, `tumble test`, checkpoints,
+// shards, the Python module) goes scene -> RunPlan -> Simulation here, so that one scene gives one
 // integrator, one step, one timeline and so one trajectory, whichever command runs it:
 //   1. plan_run(): world.integrator "auto" becomes an integrator and a step for the scene's frame
 //      rate (its pilot runs, physics/accuracy_plan.h), then the timeline (frame k at t = k / fps,

@@ -1,6 +1,6 @@
 #pragma once
-// One rendering run, shared by `tumble render` and `tumble bench-render`: frames from the
-// simulation through the pipeline (app/run/pipeline.h) into a sink, and its stage table.
+// One rendering run, shared by `tumble render` and the render benchmark (bench/render): frames from
+// the simulation through the pipeline (app/run/pipeline.h) into a sink, and its stage table.
 #include "app/run/pipeline.h"
 #include "app/run/simulation.h"
 #include "app/run/timeline.h"

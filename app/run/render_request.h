@@ -2,8 +2,8 @@
 // What a render is asked beyond its scene file: the picture switches of `tumble render` (and of
 // the Python module's keyword arguments), the output and its encoding, with one meaning and one
 // set of error messages for both (run_request.h is the same for the physics' overrides). What the
-// commands that draw (render, render --compare, bench-render, the Python module) make of them:
-// the scene's picture settings with the overrides applied, the output's name, and its sink.
+// commands that draw (render, render --compare, the render benchmark, the Python module) make of
+// them: the scene's picture settings with the overrides applied, the output's name, and its sink.
 #include "app/run/timeline.h"
 #include "app/scene/scene.h"
 #include "render/frame_sink.h"

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # Validates JSON files against a JSON Schema (draft 2020-12) with Debian's python3-jsonschema, for
-# tests/app/schema_test.cpp: `validate_json_schema.py SCHEMA FILE...` checks the schema itself,
+# tests/app/scene/schema_test.cpp: `validate_json_schema.py SCHEMA FILE...` checks the schema itself,
 # then prints one line per file, "valid FILE" or "invalid FILE: <path>: <message>", and exits 0
 # (2 when the schema is not a valid draft 2020-12 schema).
 import json

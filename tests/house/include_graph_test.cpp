@@ -52,6 +52,8 @@ const std::vector<Room> kRooms = {
     {"app/cli", {"app/", "physics/", "render/", "io/"}, {"app/python/"}},
     {"tests", {""}, {"bench/"}},
     {"bench", {""}, {"tests/", "app/"}},
+    // The render benchmark prepares and draws runs as `tumble render` does (app/run).
+    {"bench/render", {""}, {"tests/", "app/cli/", "app/python/"}},
 };
 
 const Room* room_of(const std::string& file) {
@@ -135,8 +137,10 @@ TEST(House, TheCheckerRefusesBackwardIncludes) {
     EXPECT_FALSE(violation("app/run/render_frames.cpp", "app/cluster/checkpoint.h").empty());
     EXPECT_FALSE(violation("app/cluster/video_join.cpp", "app/cli/failure.h").empty());
     EXPECT_FALSE(violation("tests/physics/x_test.cpp", "bench/sphere_rain.h").empty());
-    EXPECT_FALSE(violation("bench/x_bench.cpp", "tests/measured.h").empty());
+    EXPECT_FALSE(violation("bench/x_bench.cpp", "tests/support/measured.h").empty());
     EXPECT_FALSE(violation("render/png_io.cpp", "../app/scene/scene.h").empty());
+    EXPECT_FALSE(violation("bench/render/render_measure.cpp", "app/cli/render_setup.h").empty());
+    EXPECT_FALSE(violation("bench/render/render_cases.cpp", "tests/support/measured.h").empty());
 
     EXPECT_EQ(violation("app/run/still.cpp", "app/scene/scene.h"), "");
     EXPECT_EQ(violation("app/cluster/checkpoint_store.cpp", "app/run/simulation.h"), "");
@@ -145,7 +149,8 @@ TEST(House, TheCheckerRefusesBackwardIncludes) {
     EXPECT_EQ(violation("app/regression/suite.cpp", "app/run/frame_source.h"), "");
     EXPECT_EQ(violation("render/png_sink.cpp", "io/atomic_file.h"), "");
     EXPECT_EQ(violation("physics/exact/body_motion.cpp", "physics/model.h"), "");
-    EXPECT_EQ(violation("tests/app/x_test.cpp", "app/cli/failure.h"), "");
+    EXPECT_EQ(violation("tests/app/cli/x_test.cpp", "app/cli/failure.h"), "");
+    EXPECT_EQ(violation("bench/render/render_measure.cpp", "app/run/prepare_run.h"), "");
 }
 
 } // namespace

@@ -8,9 +8,9 @@
 // its first impact slower than v_th:
 //   T_rest = t_0 + sum_{k<n} 2 e V_k / g.
 // With v_th = 0 it bounces forever in finite time (Zeno): T = t_0 (1 + 2e / (1 - e)).
-#include "measured.h"
 #include "physics/scenes/contact_scenes.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The decision that turns the contact stage on (physics/can_touch.h): exact for free relative
 // flight, conservative under relative acceleration, and never "cannot touch" for bodies that meet.
-#include "measured.h"
 #include "physics/build.h"
 #include "physics/step.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

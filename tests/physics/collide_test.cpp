@@ -1,9 +1,9 @@
 // Narrow phase: every family of shape pairs gives the manifold geometry says it must (normal from
 // A to B, separations, point counts), and ids stay put while the same features touch.
-#include "measured.h"
 #include "physics/build.h"
 #include "physics/collide.h"
 #include "physics/gjk.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

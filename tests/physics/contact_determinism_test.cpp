@@ -2,10 +2,10 @@
 // State continues bit-identically, 2, 3 and 4 threads give the single-threaded bits, and the final
 // state is pinned by a hash (Box2D's test_determinism habit), so that any change to the results is
 // seen and made on purpose.
-#include "measured.h"
 #include "physics/scenes/sphere_rain.h"
 #include "physics/scenes/state_hash.h"
 #include "physics/step.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // A passive contact never adds energy: a spinning top (a convex mesh with a 1.5 mm flat tip, as
 // assets/meshes/top.obj) on a plane with friction, upright and tilted, at h, 2h and 4h. The total
 // energy T + V may only fall; its highest value over the run is compared with the start.
-#include "measured.h"
 #include "physics/diagnostics.h"
 #include "physics/scenes/ground.h"
 #include "physics/scenes/scene.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

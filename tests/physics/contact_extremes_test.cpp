@@ -7,10 +7,10 @@
 //     10 : 1, 0.2 mm at 100 : 1 (at the default 1440 substeps per second with 3 sweeps each;
 //     at 480 per second and one sweep, before issue 13, 0.45 and 4.5 mm, walking sideways up to
 //     17 mm in 2 s). The contact stability map of `tumble study` holds 1 : 1000 too (2.4 mm).
-#include "measured.h"
 #include "physics/scenes/ground.h"
 #include "physics/scenes/scene.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

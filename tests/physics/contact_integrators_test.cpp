@@ -1,9 +1,9 @@
 // The contact stage works with every named integrator: the test scenes run without exploding and
 // keep their physics (a ball bounces to its apex, a box sticks on a ramp, a tower stands); and a
 // contact scene whose bodies never touch steps exactly as the integrator alone would.
-#include "measured.h"
 #include "physics/scenes/contact_scenes.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Contacts against exact physics, each at h, 2h and 4h (h = 1/240 s), measured values printed
 // beside their bounds.
-#include "measured.h"
 #include "physics/diagnostics.h"
 #include "physics/scenes/contact_scenes.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

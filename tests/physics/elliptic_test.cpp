@@ -3,7 +3,7 @@
 // 19.12.1) where even long double cannot hold k, and against their own identities.
 #include "physics/elliptic.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>

@@ -3,8 +3,8 @@
 // closed forms; a body's estimate stops at its first contact (at the time the speculative margin
 // says) or sleep and keeps its free-flight value; a body never in contact keeps an estimate that
 // matches its exact motion; a shadow that diverges stops the run naming body and step. The estimate
-// against the exact oracles of every study problem is tests/app/error_estimate_oracle_test.cpp.
-#include "measured.h"
+// against the exact oracles of every study problem is
+// tests/app/study/error_estimate_oracle_test.cpp.
 #include "physics/error_estimate.h"
 #include "physics/exact/body_motion.h"
 #include "physics/integrator.h"
@@ -13,6 +13,7 @@
 #include "physics/scenes/state_hash.h"
 #include "physics/step.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

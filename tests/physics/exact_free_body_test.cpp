@@ -6,7 +6,7 @@
 #include "physics/exact/free_rigid_body.h"
 #include "physics/exact/simple_motions.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

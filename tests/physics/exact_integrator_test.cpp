@@ -12,7 +12,7 @@
 #include "physics/diagnostics.h"
 #include "physics/free_rotation.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -14,7 +14,7 @@
 
 #include "physics/diagnostics.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

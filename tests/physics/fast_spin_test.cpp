@@ -11,12 +11,12 @@
 // Measured (deepest point over 2 s, m below the table, worst of 100/300/1000 rad/s at h, 2h, 4h):
 // sphere 4.3e-6, box 1.4e-4 (300 rad/s, 4h); energy gain 0. Bound: 2 mm, the contact map's "top"
 // limit.
-#include "measured.h"
 #include "physics/diagnostics.h"
 #include "physics/scenes/ground.h"
 #include "physics/scenes/stability_scenes.h"
 #include "physics/step.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "physics/diagnostics.h"
 #include "physics/step.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // Contact truths of issue 13 whose expected values are derived here, not read from the model:
 // restitution mixed between two unequal materials, and the energy that pushing overlapping bodies
 // apart may add. Each at h, 2h and 4h with the measured value printed beside its bound.
-#include "measured.h"
 #include "physics/diagnostics.h"
 #include "physics/scenes/contact_scenes.h"
 #include "physics/scenes/scene.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // Mass properties and material mixing checked against values derived here, not read back from
 // what build_model() made (issue 13: a bug in mass properties would otherwise be shared by the
 // code and its oracle).
-#include "measured.h"
 #include "physics/build.h"
 #include "physics/diagnostics.h"
 #include "physics/mesh.h"
 #include "physics/scenes/contact_scenes.h"
 #include "physics/shape.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

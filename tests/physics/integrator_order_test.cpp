@@ -11,7 +11,7 @@
 // the unit sphere and costs no order (Buss's warning is about methods that drop the sphere).
 #include "integrator_harness.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // factor 1.25 of 2^p either way, and the error at h must stay under a stated accuracy budget.
 #include "integrator_harness.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // exact polyhedral integrals of closed meshes (Mirtich 1996 / Eberly 2002), which must reproduce
 // a box, a tetrahedron and a moved, turned box to round-off, and approach a sphere and a cylinder
 // as their facets shrink.
-#include "measured.h"
 #include "physics/build.h"
 #include "physics/hull.h"
 #include "physics/mesh.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

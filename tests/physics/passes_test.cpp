@@ -21,7 +21,7 @@
 
 #include "physics/passes.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

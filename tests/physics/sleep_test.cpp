@@ -1,8 +1,8 @@
 // Sleeping: a settled stack sleeps (no motion at all, no solver work), a ball landing on it wakes
 // the whole island, and the scene switch turns sleeping off.
-#include "measured.h"
 #include "physics/scenes/contact_scenes.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 

@@ -15,12 +15,12 @@
 // the fast-top rate when the spin dominates (eps << 1). Started on that steady motion (angular
 // velocity Omega e_z + (w3 - Omega cos theta) a, centre velocity Omega e_z x d a) the top has no
 // nutation, and its axis turns about the vertical at the exact root.
-#include "measured.h"
 #include "physics/build.h"
 #include "physics/mesh.h"
 #include "physics/scenes/ground.h"
 #include "physics/scenes/scene.h"
 #include "scene_sim.h"
+#include "support/measured.h"
 
 #include "physics/scenes/stability_scenes.h"
 

@@ -4,7 +4,7 @@
 #include "render/camera.h"
 #include "render/shadow_map.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

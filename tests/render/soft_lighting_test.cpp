@@ -7,7 +7,7 @@
 #include "render/png_io.h"
 #include "render/renderer.h"
 
-#include "measured.h"
+#include "support/measured.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
