@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Times a clean Release build of the `tumble` executable, the way README's first command builds it
 # (scripts/setup.sh --demo: tests and benchmarks off), with ccache off, one build at a time.
-#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble]
+#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble] [-DVAR=VALUE...]
 # Prints each run and the median, and appends them to bench/results/<machine>/build_times.csv
 # (label, commit, run, seconds, load at start). The machine is shared: compare medians taken in one
 # sitting, and say the load.
@@ -10,12 +10,14 @@ cd "$(dirname "$0")/.."
 reps=2
 label="$(git rev-parse --short HEAD)"
 target=tumble
+defines=()
 for arg in "$@"; do
   case "$arg" in
     --reps=*) reps="${arg#--reps=}" ;;
     --label=*) label="${arg#--label=}" ;;
     --target=*) target="${arg#--target=}" ;;
-    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T)" >&2
+    -D*) defines+=("$arg") ;;
+    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T, -DVAR=VALUE)" >&2
        exit 2 ;;
   esac
 done
@@ -29,7 +31,8 @@ times=()
 for run in $(seq 1 "$reps"); do
   rm -rf "$scratch/b"
   CCACHE_DISABLE=1 cmake -S . -B "$scratch/b" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF -DCMAKE_CXX_COMPILER_LAUNCHER= >/dev/null
+    -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF -DCMAKE_CXX_COMPILER_LAUNCHER= \
+    "${defines[@]}" >/dev/null
   load="$(cut -d' ' -f1 /proc/loadavg)"
   start=$(date +%s.%N)
   if ! CCACHE_DISABLE=1 cmake --build "$scratch/b" --target "$target" -j 2 > "$scratch/build.log" 2>&1; then
