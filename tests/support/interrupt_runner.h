@@ -44,16 +44,21 @@ inline pid_t start_tumble(const std::filesystem::path& dir, const std::string& a
     return pid;
 }
 
-// Waits (60 s at most) until process `pid` handles `signal` itself (its SigCgt mask in
-// /proc/PID/status has the bit): from then on a signal reaches Tumble's handler, not the default
-// action. Returns false if that never happened.
+// Waits (60 s at most) until process `pid` is Tumble (start_tumble's shell has exec'd it: the
+// Name in /proc/PID/status) and handles `signal` itself (its SigCgt mask has the bit): from then
+// on a signal reaches Tumble's handler, not the default action. The name matters: dash, the shell
+// that starts it, catches SIGINT too, and a slow start (a sanitizer build on a busy machine took
+// longer than the callers' 500 ms) would otherwise let the signal kill Tumble before its handler
+// is in place. Returns false if that never happened.
 inline bool wait_until_handling(pid_t pid, int signal) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     const std::string status = "/proc/" + std::to_string(pid) + "/status";
+    const std::string name =
+        "Name:\t" + std::filesystem::path(TUMBLE_EXE).filename().string().substr(0, 15) + "\n";
     for (;;) {
         const std::string text = read_text(status);
         const auto at = text.find("SigCgt:");
-        if (at != std::string::npos &&
+        if (text.find(name) != std::string::npos && at != std::string::npos &&
             (std::stoull(text.substr(at + 7, 24), nullptr, 16) >> (signal - 1) & 1))
             return true;
         if (std::chrono::steady_clock::now() > deadline) return false;
