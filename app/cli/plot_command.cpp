@@ -1,7 +1,8 @@
 // `tumble plot RUN.csv [RUN2.csv ...] --quantity energy --bodies book -o fig.png`: a figure of
 // quantities of `tumble simulate` runs for slides, one series per run (its integrator in the
 // legend), body and component, drawn by gnuplot (app/plot/figure.h) as PNG or SVG with its script
-// and data beside it. The quantities and where each comes from: app/plot/quantity.h.
+// and data beside it. The quantities and where each comes from: app/scene/quantity.h
+// (the catalogue) and app/plot/table_values.h.
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/gnuplot/gnuplot.h"
@@ -29,14 +30,14 @@ struct PlotCommand {
     bool quiet = false;
 };
 
-std::vector<const plot::Quantity*> find_quantities(const std::vector<std::string>& names) {
-    std::vector<const plot::Quantity*> out;
+std::vector<Quantity> find_quantities(const std::vector<std::string>& names) {
+    std::vector<Quantity> out;
     for (const std::string& n : names) {
-        const plot::Quantity* q = plot::find_quantity(n);
+        const std::optional<Quantity> q = parse_quantity(n);
         if (!q)
             throw io::BadInput("--quantity " + n +
-                               ": no such quantity; valid quantities: " + plot::quantity_names());
-        out.push_back(q);
+                               ": no such quantity; valid quantities: " + quantity_names());
+        out.push_back(*q);
     }
     return out;
 }
@@ -49,9 +50,10 @@ std::string joined(const std::vector<std::string>& parts) {
 
 plot::FigureLabels labels_for(const PlotCommand& cmd, const plot::PlotRequest& req) {
     std::vector<std::string> what;
-    for (const plot::Quantity* q : req.quantities)
-        what.emplace_back(req.quantities.size() == 1 ? q->description : q->name);
-    const std::string unit(req.quantities.front()->unit);
+    for (Quantity q : req.quantities)
+        what.emplace_back(req.quantities.size() == 1 ? quantity_info(q).description
+                                                     : quantity_info(q).name);
+    const std::string unit(quantity_info(req.quantities.front()).unit);
     plot::FigureLabels l;
     l.ylabel = joined(what) + (unit == "1" ? "" : ", " + unit);
     l.title = cmd.title.empty()
@@ -70,9 +72,8 @@ std::vector<std::string> labels_of(const PlotCommand& cmd,
 }
 
 bool needs_scene(const plot::PlotRequest& req) {
-    return !req.bodies.empty() &&
-           std::any_of(req.quantities.begin(), req.quantities.end(),
-                       [](const plot::Quantity* q) { return q->needs_scene; });
+    return !req.bodies.empty() && std::any_of(req.quantities.begin(), req.quantities.end(),
+                                              [](Quantity q) { return plot::needs_scene(q); });
 }
 
 // The scene the runs record (tumble simulate writes it on their first line), when it is the same
@@ -116,7 +117,7 @@ int run_plot(const PlotCommand& cmd) {
         req.model = &start->model;
         for (const BodyLook& look : scene->looks) req.scene_bodies.push_back(look.name);
     }
-    plot::check_request(req); // options first: a mistake costs no reading of the tables
+    plot::check_request(req);   // options first: a mistake costs no reading of the tables
     gnuplot::gnuplot_version(); // a missing gnuplot fails before the reading, naming the package
     const std::vector<std::string> labels = labels_of(cmd, files);
     std::vector<plot::Run> runs;
@@ -144,7 +145,7 @@ Subcommand add_plot_command(CLI::App& app) {
                   "the legend names each run's integrator if its file name does")
         ->required();
     p->add_option("--quantity", cmd->quantities,
-                  "what to draw, one or several of one unit: " + plot::quantity_names())
+                  "what to draw, one or several of one unit: " + quantity_names())
         ->required()
         ->delimiter(',');
     p->add_option("--bodies", cmd->bodies,

@@ -83,7 +83,7 @@ void add_switches(CLI::App* r, RenderCommand& render) {
     on_off("vectors", render.vectors,
            "arrows for each body's angular velocity w (amber) and angular momentum L (cyan)");
     r->add_option("--chart", render.chart,
-                  "strip charts in the frame, one per quantity: " + chart_quantity_names())
+                  "strip charts in the frame, one per quantity: " + quantity_names())
         ->delimiter(',');
     r->add_option("--chart-body", render.chart_body,
                   "chart this body's quantities instead of the scene's sums (name or index)");

@@ -58,25 +58,25 @@ void to_drift(Series& s, const std::string& of) {
     for (auto& [t, e] : s.points) e = (e - e0) / std::abs(e0);
 }
 
-std::string title(const Run& run, const std::string& body, const Quantity& q,
-                  std::string_view component, bool several_quantities) {
+std::string title(const Run& run, const std::string& body, Quantity q, std::string_view component,
+                  bool several_quantities) {
     std::string t = run.label;
     if (!body.empty()) t += ": " + body;
     if (!component.empty())
         t += ": " + std::string(component);
     else if (several_quantities)
-        t += ": " + std::string(q.name);
+        t += ": " + std::string(quantity_info(q).name);
     return t;
 }
 
 // One series per component of q, from the rows of one body (body >= 0) or the diagnostics.
-std::vector<Series> series_of(const Run& run, const std::string& body, int index, const Quantity& q,
+std::vector<Series> series_of(const Run& run, const std::string& body, int index, Quantity q,
                               const PlotRequest& req) {
     const bool several = req.quantities.size() > 1;
-    const std::size_t n = q.components.empty() ? 1 : q.components.size();
+    const std::vector<std::string_view> names = series_names(q);
+    const std::size_t n = names.size();
     std::vector<Series> out(n);
-    for (std::size_t c = 0; c < n; ++c)
-        out[c].title = title(run, body, q, q.components.empty() ? "" : q.components[c], several);
+    for (std::size_t c = 0; c < n; ++c) out[c].title = title(run, body, q, names[c], several);
     const auto add = [&](double t, const std::vector<double>& values) {
         for (std::size_t c = 0; c < n; ++c) out[c].points.emplace_back(t, values[c]);
     };
@@ -86,7 +86,7 @@ std::vector<Series> series_of(const Run& run, const std::string& body, int index
     } else {
         for (const DiagnosticsRow& r : run.diagnostics) add(r.t, scene_values(q, r));
     }
-    if (q.drift)
+    if (quantity_info(q).drift)
         to_drift(out[0], index >= 0 ? body + " in " + run.files.states.string()
                                     : run.files.diagnostics.string());
     return out;
@@ -95,16 +95,21 @@ std::vector<Series> series_of(const Run& run, const std::string& body, int index
 } // namespace
 
 void check_request(const PlotRequest& req) {
-    for (const Quantity* q : req.quantities) {
-        const std::string option = "--quantity " + std::string(q->name);
-        if (q->unit != req.quantities.front()->unit)
-            throw io::BadInput(option + ": its unit (" + std::string(q->unit) + ") is not " +
-                               std::string(req.quantities.front()->name) + "'s (" +
-                               std::string(req.quantities.front()->unit) +
+    const QuantityInfo& first = quantity_info(req.quantities.front());
+    for (Quantity q : req.quantities) {
+        const QuantityInfo& info = quantity_info(q);
+        const std::string option = "--quantity " + std::string(info.name);
+        if (info.unit != first.unit)
+            throw io::BadInput(option + ": its unit (" + std::string(info.unit) + ") is not " +
+                               std::string(first.name) + "'s (" + std::string(first.unit) +
                                "); one figure has one axis: draw them in two figures");
-        if (req.bodies.empty() && !q->of_scene)
+        if (req.bodies.empty() && !info.of_scene)
             throw io::BadInput(option + ": a body's quantity: name the body with --bodies");
-        if (!req.bodies.empty() && q->needs_scene && !req.model)
+        if (req.bodies.empty() && !in_diagnostics_table(q))
+            throw io::BadInput(option + ": the diagnostics table holds no scene total of it; "
+                                        "name the bodies with --bodies (and the scene with "
+                                        "--scene), or draw it with `tumble render --chart`");
+        if (!req.bodies.empty() && needs_scene(q) && !req.model)
             throw io::BadInput(option + " of a body needs its mass and inertia: name the run's "
                                         "scene with --scene");
     }
@@ -123,8 +128,8 @@ std::vector<Series> make_series(const std::vector<Run>& runs, const PlotRequest&
             req.bodies.empty() ? std::vector<std::string>{""} : req.bodies;
         for (const std::string& body : bodies) {
             const int index = body.empty() ? -1 : body_index(run, body);
-            for (const Quantity* q : req.quantities)
-                for (Series& s : series_of(run, body, index, *q, req)) out.push_back(std::move(s));
+            for (Quantity q : req.quantities)
+                for (Series& s : series_of(run, body, index, q, req)) out.push_back(std::move(s));
         }
     }
     return out;

@@ -1,8 +1,8 @@
 #pragma once
 // The series one figure of `tumble plot` draws: for each run, each body asked for (or the scene's
 // totals) and each quantity or component, the value against time.
-#include "app/plot/quantity.h"
 #include "app/plot/run_files.h"
+#include "app/plot/table_values.h"
 #include "physics/model.h"
 
 #include <string>
@@ -17,8 +17,8 @@ struct Series {
 };
 
 struct PlotRequest {
-    std::vector<const Quantity*> quantities; // sharing one unit
-    std::vector<std::string> bodies;         // by name; empty: the scene's totals
+    std::vector<Quantity> quantities; // sharing one unit
+    std::vector<std::string> bodies;  // by name; empty: the scene's totals
     // The runs' scene, when a quantity needs masses or inertia (else null): its model and the
     // names of its bodies, held against each run's so that a run of another scene is refused.
     const physics::Model* model = nullptr;

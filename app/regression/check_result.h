@@ -30,7 +30,7 @@ struct ImageOutcome {
 // One compared (body, quantity) or (scene, quantity) pair over the sampled frames.
 struct Series {
     std::string body; // empty for the scene's energy and momenta
-    Quantity quantity = Quantity::kPosition;
+    StateQuantity quantity = StateQuantity::kPosition;
     double tolerance = 0.0;
     std::vector<std::int64_t> frames;
     std::vector<double> t, deviation; // |actual - golden| in the quantity's unit

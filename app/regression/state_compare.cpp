@@ -46,11 +46,11 @@ Golden index(Trajectory tr) {
     return g;
 }
 
-Vec3 vector_of(Quantity q, const StateRow& r) {
-    return q == Quantity::kPosition ? r.x : q == Quantity::kVelocity ? r.v : r.w;
+Vec3 vector_of(StateQuantity q, const StateRow& r) {
+    return q == StateQuantity::kPosition ? r.x : q == StateQuantity::kVelocity ? r.v : r.w;
 }
-Vec3 vector_of(Quantity q, const DiagnosticsRow& r) {
-    return q == Quantity::kMomentum ? r.p : r.l;
+Vec3 vector_of(StateQuantity q, const DiagnosticsRow& r) {
+    return q == StateQuantity::kMomentum ? r.p : r.l;
 }
 
 // The plotted scalar: the component that differs most at the worst sample; an orientation's
@@ -59,7 +59,7 @@ template <class Row>
 void plot_values(Series& s, const std::vector<const Row*>& actual,
                  const std::vector<const Row*>& golden) {
     if constexpr (std::is_same_v<Row, StateRow>) {
-        if (s.quantity == Quantity::kOrientation) {
+        if (s.quantity == StateQuantity::kOrientation) {
             s.component = "angle turned since the first sample";
             for (std::size_t k = 0; k < actual.size(); ++k) {
                 s.actual.push_back(angle_between(golden.front()->q, actual[k]->q));
@@ -68,7 +68,7 @@ void plot_values(Series& s, const std::vector<const Row*>& actual,
             return;
         }
     } else {
-        if (s.quantity == Quantity::kEnergy) {
+        if (s.quantity == StateQuantity::kEnergy) {
             s.component = "E";
             for (std::size_t k = 0; k < actual.size(); ++k) {
                 s.actual.push_back(actual[k]->energy);
@@ -140,13 +140,13 @@ double Series::ratio() const {
     return d > 0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
-double deviation(Quantity q, const StateRow& a, const StateRow& g) {
-    if (q == Quantity::kOrientation) return angle_between(g.q, a.q);
+double deviation(StateQuantity q, const StateRow& a, const StateRow& g) {
+    if (q == StateQuantity::kOrientation) return angle_between(g.q, a.q);
     return (vector_of(q, a) - vector_of(q, g)).norm();
 }
 
-double deviation(Quantity q, const DiagnosticsRow& a, const DiagnosticsRow& g) {
-    if (q == Quantity::kEnergy) return std::abs(a.energy - g.energy);
+double deviation(StateQuantity q, const DiagnosticsRow& a, const DiagnosticsRow& g) {
+    if (q == StateQuantity::kEnergy) return std::abs(a.energy - g.energy);
     return (vector_of(q, a) - vector_of(q, g)).norm();
 }
 

@@ -12,7 +12,7 @@ namespace tumble::app {
 void judge_states(const StateCheck& check, CheckResult& result);
 
 // |actual - golden| of one quantity, in its unit (orientation: the angle between, radians).
-double deviation(Quantity q, const StateRow& actual, const StateRow& golden);
-double deviation(Quantity q, const DiagnosticsRow& actual, const DiagnosticsRow& golden);
+double deviation(StateQuantity q, const StateRow& actual, const StateRow& golden);
+double deviation(StateQuantity q, const DiagnosticsRow& actual, const DiagnosticsRow& golden);
 
 } // namespace tumble::app

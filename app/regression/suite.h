@@ -17,8 +17,10 @@ namespace tumble::app {
 
 inline constexpr int kSuiteFormatVersion = 1;
 
-// What a state check can compare; each with an absolute tolerance in SI units or radians.
-enum class Quantity {
+// What a state check can compare (StateQuantity: errors between two states, not the catalogue of
+// app/scene/quantity.h, which is what a run shows); each with an absolute tolerance in SI units or
+// radians.
+enum class StateQuantity {
     kPosition,        // body origin, m (distance between the two positions)
     kOrientation,     // rad (angle of the rotation between the two orientations)
     kVelocity,        // m/s (norm of the difference)
@@ -27,9 +29,9 @@ enum class Quantity {
     kMomentum,        // kg m/s, the scene's linear momentum (norm of the difference)
     kAngularMomentum, // kg m^2/s, about the world origin
 };
-const char* quantity_name(Quantity q); // "angular_velocity"
-const char* quantity_unit(Quantity q); // "rad/s"
-bool per_body(Quantity q);             // position .. angular_velocity
+const char* quantity_name(StateQuantity q); // "angular_velocity"
+const char* quantity_unit(StateQuantity q); // "rad/s"
+bool per_body(StateQuantity q);             // position .. angular_velocity
 
 struct Mask { // pixels to ignore, from the image's top-left corner
     int x = 0, y = 0, width = 0, height = 0;
@@ -47,7 +49,7 @@ struct ImageCheck {
 };
 
 struct Tolerance {
-    Quantity quantity;
+    StateQuantity quantity;
     double absolute = 0.0;
 };
 
@@ -57,7 +59,7 @@ struct StateCheck {
     std::vector<std::string> bodies;   // as the scene names them
     std::vector<int> body_indices;     // the same, as indices into the scene's bodies
     std::vector<std::int64_t> frames;  // sampled frames, increasing
-    std::vector<Tolerance> quantities; // in the order of Quantity
+    std::vector<Tolerance> quantities; // in the order of StateQuantity
     std::filesystem::path golden;      // <goldens>/<name>.csv; diagnostics beside it
     std::filesystem::path golden_diagnostics() const;
 };

@@ -149,9 +149,9 @@ int find_body(const FieldValue& at, const Scene& scene, const std::string& name)
 
 std::vector<Tolerance> read_quantities(ObjectReader r) {
     std::vector<Tolerance> out;
-    for (int q = 0; q <= int(Quantity::kAngularMomentum); ++q)
-        if (auto v = r.optional(quantity_name(Quantity(q))))
-            out.push_back({Quantity(q), v->number()});
+    for (int q = 0; q <= int(StateQuantity::kAngularMomentum); ++q)
+        if (auto v = r.optional(quantity_name(StateQuantity(q))))
+            out.push_back({StateQuantity(q), v->number()});
     r.finish();
     if (out.empty()) r.fail("expected at least one quantity with its tolerance");
     return out;
@@ -244,20 +244,20 @@ void read_image_defaults(ObjectReader r, Context& c) {
 
 } // namespace
 
-const char* quantity_name(Quantity q) {
+const char* quantity_name(StateQuantity q) {
     static const char* const names[] = {"position",         "orientation", "velocity",
                                         "angular_velocity", "energy",      "momentum",
                                         "angular_momentum"};
     return names[int(q)];
 }
 
-const char* quantity_unit(Quantity q) {
+const char* quantity_unit(StateQuantity q) {
     static const char* const units[] = {"m", "rad", "m/s", "rad/s", "J", "kg m/s", "kg m^2/s"};
     return units[int(q)];
 }
 
-bool per_body(Quantity q) {
-    return q <= Quantity::kAngularVelocity;
+bool per_body(StateQuantity q) {
+    return q <= StateQuantity::kAngularVelocity;
 }
 
 std::filesystem::path StateCheck::golden_diagnostics() const {

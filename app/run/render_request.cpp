@@ -22,8 +22,8 @@ void apply_teaching_overrides(const RenderRequest& cmd, Scene& scene) {
     if (cmd.chart) {
         rs.chart.clear();
         for (const std::string& name : *cmd.chart) {
-            const auto q = parse_chart_quantity(name);
-            if (!q) throw SceneError("--chart", name, "expected one of " + chart_quantity_names());
+            const auto q = parse_quantity(name);
+            if (!q) throw SceneError("--chart", name, "expected one of " + quantity_names());
             rs.chart.push_back(*q);
         }
     }

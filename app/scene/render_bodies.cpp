@@ -37,7 +37,7 @@ void resolve_render_bodies(Scene& scene) {
     must_move(rs.poinsot, "Poinsot's construction");
     must_move(rs.overlay_body, "the overlay of one body");
     bool needs_body = false;
-    for (ChartQuantity q : rs.chart) needs_body |= chart_quantity_info(q).needs_body;
+    for (Quantity q : rs.chart) needs_body |= !quantity_info(q).of_scene;
     if (needs_body && rs.chart_body.index < 0) {
         // w and w_body are one body's: the first that moves, unless one was named.
         for (std::size_t i = 0; i < dynamic.size() && rs.chart_body.index < 0; ++i)

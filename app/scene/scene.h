@@ -2,7 +2,7 @@
 // A scene as loaded from a file: the physics description (world + bodies), and how to draw it.
 // The format is documented field by field in docs/scene-format.md.
 #include "app/scene/camera_rig.h"
-#include "app/scene/chart_quantity.h"
+#include "app/scene/quantity.h"
 #include "physics/accuracy_plan.h"
 #include "physics/build.h"
 #include "render/scene_view.h"
@@ -50,7 +50,7 @@ struct RenderSettings {
         std::string name, place;
         int index = -1; // -1: none (the scene's sums, for charts and the overlay)
     };
-    std::vector<ChartQuantity> chart; // one panel each; empty: no chart
+    std::vector<Quantity> chart; // one panel each; empty: no chart
     BodyRef chart_body, poinsot, overlay_body;
     double chart_window = 0.0; // s of time shown; 0: the whole run
     bool trails = false;

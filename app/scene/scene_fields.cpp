@@ -186,8 +186,8 @@ const Table& render() {
 const Table& chart() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> out;
-        for (int i = 0; i <= int(ChartQuantity::AngularVelocityBody); ++i)
-            out.push_back(chart_quantity_info(static_cast<ChartQuantity>(i)).name);
+        for (int i = 0; i < kQuantityCount; ++i)
+            out.emplace_back(quantity_info(static_cast<Quantity>(i)).name);
         return out;
     }();
     static const Table t{

@@ -105,7 +105,7 @@ void read_chart(ObjectReader r, RenderSettings& rs) {
     const FieldValue q = r.field("quantities");
     rs.chart.clear();
     for (std::size_t i = 0; i < q.size(); ++i)
-        rs.chart.push_back(*parse_chart_quantity(q.at(i).choice()));
+        rs.chart.push_back(*parse_quantity(q.at(i).choice()));
     if (auto b = r.optional("body")) rs.chart_body = {b->string(), b->reader().path()};
     if (auto w = r.optional("window")) rs.chart_window = w->number();
     r.finish();

@@ -8,21 +8,21 @@ namespace tumble::app {
 
 ChartHistory::ChartHistory(const ChartSettings& settings, const physics::Model& model,
                            const physics::State& initial)
-    : settings_(settings), e0_(chart_energy(model, initial, settings.body)) {
+    : settings_(settings), e0_(energy_of(model, initial, settings.body)) {
     record(model, initial);
 }
 
 void ChartHistory::record(const physics::Model& model, const physics::State& state) {
     times_.push_back(state.time(model));
-    for (ChartQuantity q : settings_.quantities) {
-        const auto v = measure(q, model, state, settings_.body, e0_);
+    for (Quantity q : settings_.quantities) {
+        const auto v = quantity_value(q, model, state, settings_.body, e0_);
         values_.insert(values_.end(), v.begin(), v.end());
     }
 }
 
 void ChartScale::include(const ChartHistory& h, std::size_t from) {
     for (std::size_t p = 0; p < h.panels(); ++p) {
-        const int n = chart_quantity_info(h.settings().quantities[p]).components;
+        const int n = quantity_info(h.settings().quantities[p]).components;
         Panel& s = panels_[p];
         bool outside = false;
         for (std::size_t k = from; k < h.samples(); ++k) {
@@ -65,13 +65,14 @@ std::string seconds(double t) {
 }
 
 // The longest of "book: w_body, rad/s", "w_body, rad/s", "w_body" that fits `columns`.
-std::string title(const ChartHistory& h, ChartQuantity q, std::size_t columns) {
-    const ChartQuantityInfo& i = chart_quantity_info(q);
-    const std::string unit = *i.unit ? std::string(", ") + i.unit : "";
+std::string title(const ChartHistory& h, Quantity q, std::size_t columns) {
+    const QuantityInfo& i = quantity_info(q);
+    const std::string name(i.name);
+    const std::string unit = i.unit == "1" ? "" : ", " + std::string(i.unit); // dimensionless
     const std::string subject = h.settings().body < 0 ? "scene" : h.settings().body_name;
-    for (const std::string& t : {subject + ": " + i.name + unit, i.name + unit})
+    for (const std::string& t : {subject + ": " + name + unit, name + unit})
         if (t.size() <= columns) return t;
-    return i.name;
+    return name;
 }
 
 struct Frame {                  // one panel's parts, pixels
@@ -98,9 +99,9 @@ void line(render::Canvas& c, glm::vec2 a, glm::vec2 b, glm::vec4 rgba, float wid
 }
 
 // The title on the left of the top row and, for a vector, "-x -y -z" in its colours on the right.
-void heading(const ChartHistory& h, ChartQuantity q, const Frame& fr, const render::OverlayFont& f,
+void heading(const ChartHistory& h, Quantity q, const Frame& fr, const render::OverlayFont& f,
              render::Canvas& c) {
-    const int n = chart_quantity_info(q).components;
+    const int n = quantity_info(q).components;
     const float item = 2.6f * f.advance; // a stroke, a gap and the letter
     const float legend = n == 3 ? 3.0f * item + 2.0f * f.advance : 0.0f;
     const auto columns =
@@ -143,7 +144,7 @@ void axes(const render::NiceRange& y, double t0, double t1, const Frame& fr,
 void panel(const ChartHistory& h, std::size_t p, const render::NiceRange& y, double t0, double t1,
            const Frame& fr, const render::OverlayFont& f, render::Canvas& c) {
     c.rects.push_back({fr.lo, fr.hi, kPanel});
-    const ChartQuantity q = h.settings().quantities[p];
+    const Quantity q = h.settings().quantities[p];
     heading(h, q, fr, f, c);
     axes(y, t0, t1, fr, f, c);
     const auto to_px = [&](double t, double v) {
@@ -157,7 +158,7 @@ void panel(const ChartHistory& h, std::size_t p, const render::NiceRange& y, dou
     const std::size_t n = h.samples() - first;
     const std::size_t stride =
         std::max<std::size_t>(1, n / std::max(1, int(fr.plot_hi.x - fr.plot_lo.x)));
-    const int components = chart_quantity_info(q).components;
+    const int components = quantity_info(q).components;
     for (int comp = 0; comp < components; ++comp) {
         render::Canvas::Strip s{std::uint32_t(c.points.size()), 0,
                                 components == 1 ? kScalar : kXyz[comp],

@@ -9,7 +9,7 @@
 // than one step of slack at each end (exactly one where the data ends on a step), and changes
 // only when a sample leaves it, so the axes do not twitch from frame to frame. With --compare
 // the tiles share one ChartScale: the same value sits at the same height in every tile.
-#include "app/scene/chart_quantity.h"
+#include "app/scene/quantity.h"
 #include "app/view/overlay_layout.h"
 #include "render/nice_scale.h"
 #include "render/scene_view.h"
@@ -21,10 +21,10 @@
 namespace tumble::app {
 
 struct ChartSettings {
-    std::vector<ChartQuantity> quantities; // one panel each, top to bottom
-    int body = -1;                         // the body charted; -1: the scene's sums
-    std::string body_name;                 // for the titles
-    double window = 0.0;                   // s of time shown; 0: the whole run
+    std::vector<Quantity> quantities; // one panel each, top to bottom
+    int body = -1;                    // the body charted; -1: the scene's sums
+    std::string body_name;            // for the titles
+    double window = 0.0;              // s of time shown; 0: the whole run
 };
 
 // Every charted quantity at every frame time so far.

@@ -275,6 +275,7 @@ TEST(Plot, BadInputExitsTwoNamingFileAndPlaceAndWritesNothing) {
         {"run.csv --quantity w --bodies brik", "no body of that name in run.csv"},
         {"run.csv --quantity w", "a body's quantity: name the body with --bodies"},
         {"run.csv --quantity ke_rot --bodies brick", "name the run's scene with --scene"},
+        {"run.csv --quantity ke_trans", "the diagnostics table holds no scene total of it"},
         {"run.csv --quantity ke_rot --bodies brick --scene default", "are not those of the run"},
         {"run.csv --quantity w,energy --bodies brick --scene scene.json",
          "one figure has one axis"},

@@ -38,22 +38,22 @@ TEST(StateChecks, APerturbedGoldenNamesBodyQuantityFirstTimeAndAmount) {
 }
 
 TEST(StateChecks, DeviationsAreDistancesAnglesAndDifferences) {
-    using app::Quantity;
+    using app::StateQuantity;
     app::StateRow a, g;
     g.x = {1, 2, 3}, a.x = {1, 2 + 0.3, 3 + 0.4}; // a 3-4-5 triangle
-    EXPECT_DOUBLE_EQ(app::deviation(Quantity::kPosition, a, g), 0.5);
+    EXPECT_DOUBLE_EQ(app::deviation(StateQuantity::kPosition, a, g), 0.5);
     g.q = physics::Quat(Eigen::AngleAxisd(0.2, physics::Vec3(1, 2, 3).normalized()));
     a.q = g.q * physics::Quat(Eigen::AngleAxisd(0.7, physics::Vec3::UnitY()));
-    EXPECT_NEAR(app::deviation(Quantity::kOrientation, a, g), 0.7, 1e-12);
+    EXPECT_NEAR(app::deviation(StateQuantity::kOrientation, a, g), 0.7, 1e-12);
     a.q.coeffs() *= -1.0; // the same rotation
-    EXPECT_NEAR(app::deviation(Quantity::kOrientation, a, g), 0.7, 1e-12);
+    EXPECT_NEAR(app::deviation(StateQuantity::kOrientation, a, g), 0.7, 1e-12);
     g.w = {0, 0, 5}, a.w = {0, 0, -5};
-    EXPECT_DOUBLE_EQ(app::deviation(Quantity::kAngularVelocity, a, g), 10.0);
+    EXPECT_DOUBLE_EQ(app::deviation(StateQuantity::kAngularVelocity, a, g), 10.0);
     app::DiagnosticsRow da, dg;
     da.energy = 3.25, dg.energy = 3.0;
-    EXPECT_DOUBLE_EQ(app::deviation(Quantity::kEnergy, da, dg), 0.25);
+    EXPECT_DOUBLE_EQ(app::deviation(StateQuantity::kEnergy, da, dg), 0.25);
     da.p = {0, 1, 0};
-    EXPECT_DOUBLE_EQ(app::deviation(Quantity::kMomentum, da, dg), 1.0);
+    EXPECT_DOUBLE_EQ(app::deviation(StateQuantity::kMomentum, da, dg), 1.0);
 }
 
 struct BadSuite {

@@ -137,7 +137,7 @@ TEST(Poinsot, ThePolhodeClosesAfterOnePeriodOfTheExactSolution) {
 TEST(StripChart, SamplesAreTheQuantitiesAtEachFrameAndTheScaleHoldsThemAll) {
     const Scene scene = load_scene(book_scene("rk4", 1.0 / 240, 2.0), "book.json");
     Simulation sim = make_simulation(scene, scene.world.dt);
-    ChartSettings c{{ChartQuantity::Energy, ChartQuantity::AngularVelocityBody}, 0, "book", 0.0};
+    ChartSettings c{{Quantity::Energy, Quantity::AngularVelocityBody}, 0, "book", 0.0};
     ChartHistory history(c, sim.model, sim.state);
     ChartScale scale(2);
     scale.include(history, 0);
@@ -199,8 +199,7 @@ TEST(StripChart, TheBoxHoldsTheDataWithAtMostOneStepOfSlack) {
     // The intermediate-axis book: w_body's components swing between -6 and 6 rad/s.
     const Scene scene = load_scene(book_scene("splitting", 1.0 / 240, 12.0), "book.json");
     Simulation sim = make_simulation(scene, scene.world.dt);
-    ChartSettings c{
-        {ChartQuantity::AngularVelocityBody, ChartQuantity::EnergyDrift}, 0, "book", 0.0};
+    ChartSettings c{{Quantity::AngularVelocityBody, Quantity::EnergyDrift}, 0, "book", 0.0};
     ChartHistory history(c, sim.model, sim.state);
     ChartScale scale(2);
     scale.include(history, 0);
@@ -243,7 +242,7 @@ TEST(StripChart, ComparedTilesShareOneScale) {
     const Scene a = load_scene(book_scene("euler", 1.0 / 60, 4.0), "a.json");
     const Scene b = load_scene(book_scene("splitting", 1.0 / 60, 4.0), "b.json");
     Simulation sa = make_simulation(a, a.world.dt), sb = make_simulation(b, b.world.dt);
-    ChartSettings c{{ChartQuantity::EnergyDrift}, 0, "book", 0.0};
+    ChartSettings c{{Quantity::EnergyDrift}, 0, "book", 0.0};
     ChartHistory ha(c, sa.model, sa.state), hb(c, sb.model, sb.state);
     ChartScale shared(1);
     for (int k = 0; k < 240; ++k) {
@@ -256,6 +255,35 @@ TEST(StripChart, ComparedTilesShareOneScale) {
     TUMBLE_MEASURED(euler_drift, 1e-2);
     EXPECT_GT(euler_drift, 100 * split_drift);
     EXPECT_GE(shared.range(0).hi - shared.range(0).lo, euler_drift);
+}
+
+// The chart's energies from their definitions (app/scene/quantity.h, the catalogue tumble plot
+// shares): a thrown, spinning brick, T = 1/2 m v.v + 1/2 w . I_w w, V = - m g . x, E = T + V.
+TEST(StripChart, KineticAndPotentialEnergyFollowTheirDefinitions) {
+    const std::string json = R"({"format_version": 1, "world": {"dt": 0.01, "duration": 1},
+      "bodies": [{"name": "brick", "shape": {"type": "box", "size": [0.2, 0.4, 0.6]}, "mass": 2,
+                  "position": [0, 0, 1], "velocity": [1, 0, 3], "angular_velocity": [0, 0, 2]}]})";
+    const Scene scene = load_scene(json, "brick.json");
+    Simulation sim = make_simulation(scene, 0.01);
+    ChartSettings c{{Quantity::Kinetic, Quantity::Potential, Quantity::Energy}, -1, "", 0.0};
+    ChartHistory history(c, sim.model, sim.state);
+    const double m = 2.0;
+    // Principal moments of the box, I = m (b^2 + c^2) / 12, ...; w along z, the body's z axis.
+    const double iz = m * (0.2 * 0.2 + 0.4 * 0.4) / 12;
+    double worst = 0.0;
+    for (int k = 0; k < 50; ++k) {
+        sim.step();
+        history.record(sim.model, sim.state);
+        const Vec3 v = sim.state.v[0], x = sim.state.x[0], w = sim.state.w[0];
+        const double t = 0.5 * m * v.squaredNorm() + 0.5 * iz * w.squaredNorm();
+        const double potential = m * 9.81 * x.z(); // the default g = (0, 0, -9.81) m/s^2
+        const std::size_t i = history.samples() - 1;
+        worst = std::max({worst, std::abs(history.value(0, 0, i) - t) / t,
+                          std::abs(history.value(1, 0, i) - potential) / potential,
+                          std::abs(history.value(2, 0, i) - (t + potential)) / (t + potential)});
+    }
+    TUMBLE_MEASURED(worst, 1e-14);
+    EXPECT_LT(worst, 1e-14);
 }
 
 TEST(Trails, PointsAreTheCentresAtPastFramesFadingWithAge) {
