@@ -19,7 +19,8 @@ void draw(const fs::path& dir, const std::string& name, const std::string& body)
         {dir / "plots" / (name + ".png"), "tumble study", 900, 560, body, {}});
 }
 
-std::string num(double v) {
+// A value for a log axis, at least kPlotFloor (0 has no place on it).
+std::string log_axis_value(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.9g", std::max(v, kPlotFloor));
     return buf;
@@ -44,7 +45,7 @@ std::string series(std::ostringstream& o, const std::vector<std::string>& titles
         const std::vector<std::pair<double, double>> xy = points(i);
         if (xy.empty()) continue;
         o << "$d" << i << " << EOD\n";
-        for (const auto& [x, y] : xy) o << num(x) << ' ' << num(y) << '\n';
+        for (const auto& [x, y] : xy) o << log_axis_value(x) << ' ' << log_axis_value(y) << '\n';
         o << "EOD\n";
         plot += std::string(plot.empty() ? "plot " : ", \\\n     ") + "$d" + std::to_string(i) +
                 " using 1:2 with " +
