@@ -3,7 +3,9 @@
 # time is the templates its headers instantiate (Eigen, nlohmann-json, CLI11, glm), not parsing
 # them; a batch instantiates each once. Measured with scripts/bench-build.sh (docs/engineering.md:
 # clean Release `tumble`, 2 cores): this is what took the build below 200 s; precompiled headers,
-# tried first, bought nothing (432 s against 424 and 470 s without) and are not used.
+# tried first, bought nothing (432 s against 424 and 470 s without) and are not used. Batches of
+# 16 against 8, one sitting: 129.5 s against 180.1 s (median of 2). The price is paid in
+# incremental builds: an edit recompiles its batch of up to 16 files (the debug preset: one).
 # A batch is one translation unit, so two files of a library may not define the same name in an
 # anonymous namespace (the build fails if they do: share it in a header instead). It also means a
 # file may compile only because a file before it in the batch included what it forgot:
@@ -11,7 +13,7 @@
 # What a file compiles to does not change: the same code, the same flags (-ffp-contract=off); the
 # pinned hashes and goldens of the suite hold in both.
 option(TUMBLE_UNITY_BUILD "Compile each library's files in batches (faster clean builds)" ON)
-set(TUMBLE_UNITY_BATCH 8 CACHE STRING "Files per unity batch (TUMBLE_UNITY_BUILD)")
+set(TUMBLE_UNITY_BATCH 16 CACHE STRING "Files per unity batch (TUMBLE_UNITY_BUILD)")
 
 function(tumble_unity target)
   if(TUMBLE_UNITY_BUILD)
