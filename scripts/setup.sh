@@ -12,7 +12,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 demo_packages=(
-  build-essential cmake ninja-build pkg-config
+  # The C++ compiler alone, not build-essential: nothing here runs make, and build-essential's
+  # dpkg-dev brings Perl (about 7 s of the first command on a bare machine); the tests add dpkg-dev.
+  g++ cmake ninja-build pkg-config
   libeigen3-dev
   libosmesa6-dev libglm-dev libstb-dev libpng-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
@@ -43,8 +45,8 @@ test_packages=(
   # process id.
   slurm-wlm munge iproute2
   # CPack's DEB generator (Package.BuildsTheDeb) runs `file` to find the binaries whose libraries
-  # dpkg-shlibdeps (dpkg-dev, from build-essential) names in Depends.
-  file
+  # dpkg-shlibdeps (dpkg-dev) names in Depends.
+  file dpkg-dev
   # The benchmark scripts time whole commands (/usr/bin/time) and do their arithmetic with bc.
   time bc
   # The Python module `tumble` (app/python, README "From Python", docs/python.md): bound with
