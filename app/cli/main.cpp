@@ -2,4 +2,6 @@
 // The command line lives in the cli library (app/cli/tumble_main.cpp).
 #include "app/cli/tumble_main.h"
 
-int main(int argc, char** argv) { return tumble::app::tumble_main(argc, argv); }
+int main(int argc, char** argv) {
+    return tumble::app::tumble_main(argc, argv);
+}
