@@ -18,8 +18,8 @@
 // its CPU time (the machine is shared: a preempted thread does not count waiting time), two
 // threads by the wall clock; the 2-core speed-up compares the wall-clock times of both. Counters
 // per run: steps_per_s, us_per_body_step, us_per_contact (time over the sum of contact points over
-// the steps), us_per_contact_iteration (per point and solver sweep: two sweeps, solve and relax,
-// per substep: `iterations` solve and `relax_iterations` relax sweeps), and at the end: contacts
+// the steps), us_per_contact_iteration (per point and solver sweep: each point's solve and relax
+// sweeps over its island's substeps, ContactEffort::point_sweeps), and at the end: contacts
 // (points), manifolds, max_penetration_mm, kinetic_energy_J, outside (spheres outside the box or
 // below the floor). The summary gives the medians, the 2-core speed-up and the targets of the
 // issue, each ratio from this run.
@@ -78,7 +78,7 @@ void bench_rain(benchmark::State& bench, int n, bool shifted, int threads, bool 
             stage[3] += pr.impacts, stage[4] += pr.solve, stage[5] += pr.integrate;
             stage[6] += pr.finish;
             point_steps += st.points;
-            sweeps += static_cast<double>(st.sweeps) * st.substeps * st.points;
+            sweeps += st.effort.point_sweeps; // every point's sweeps, over its island's substeps
         }
         bench.PauseTiming();
         body_steps += static_cast<double>(kRainSteps) * count;

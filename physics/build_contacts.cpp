@@ -15,9 +15,11 @@ const TriangleMesh& checked_mesh(const BodyDef& b, int i) {
 
 void validate_contact_settings(const ContactSettings& s) {
     require(s.substeps >= 0 && s.substeps <= 64, -1, "substeps",
-            "substeps must be 0 (automatic) or 1..64");
-    require(s.iterations >= 1 && s.iterations <= 64, -1, "iterations",
-            "iterations must be 1..64 solve sweeps per substep");
+            "substeps must be 0 (on demand) or 1..64");
+    require(s.iterations >= 0 && s.iterations <= 64, -1, "iterations",
+            "iterations must be 0 (on demand) or 1..64 solve sweeps per substep");
+    require(std::isfinite(s.tolerance) && s.tolerance > 0.0, -1, "contact_tolerance",
+            "the contact tolerance must be a positive length in m");
     require(s.relax_iterations >= 1 && s.relax_iterations <= 64, -1, "relax_iterations",
             "relax_iterations must be 1..64 sweeps per substep");
     require(std::isfinite(s.restitution_threshold) && s.restitution_threshold >= 0.0, -1,

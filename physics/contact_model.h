@@ -23,11 +23,22 @@ inline double mix_restitution(const Material& a, const Material& b) {
     return std::max(a.restitution, b.restitution);
 }
 
+// The contact tolerance by default, m: the largest sag of a loaded contact and the velocity
+// error left in an island (times the step) that effort on demand accepts (contact_effort.cpp).
+// Chosen by measurement: the largest that holds every case of the contact stability map at the
+// default step (docs/contacts.md, "Effort on demand").
+inline constexpr double kDefaultContactTolerance = 1e-4;
+
 struct ContactSettings {
     // Scene switches (docs/scene-format.md, "world").
     bool sleeping = true; // bodies at rest for time_to_sleep stop being simulated
-    int substeps = 0;     // per step; 0: the fewest giving h / substeps <= 1 / kSubstepRate
-    int iterations = 3;   // soft solve sweeps per substep (1..64), then the relax sweeps
+    // Effort. With substeps and iterations both 0 (the default) the effort is on demand: each
+    // island of bodies in contact gets the substeps its loads and spin need and is swept until its
+    // velocities settle, both following `tolerance` (contact_effort.cpp). A scene that sets either
+    // gets exactly that effort in every island, as before issue 28 (fixed_effort below).
+    int substeps = 0;   // per step; 0: on demand (fixed: the fewest giving h / n <= 1/kSubstepRate)
+    int iterations = 0; // soft solve sweeps per substep (1..64); 0: on demand (fixed: 3)
+    double tolerance = kDefaultContactTolerance; // m: the contact tolerance (effort on demand)
     double restitution_threshold = 0.5; // m/s: slower approaches do not bounce (resting stays put)
 
     // Solver constants (the soft step of Box2D v3, see contact_solver.h).
@@ -67,16 +78,29 @@ inline bool steps_on_one_thread(const ContactSettings& s, std::size_t dynamic_bo
     return static_cast<long long>(dynamic_bodies) < s.parallel_min_bodies;
 }
 
-// The automatic substep rate, per second. With `iterations` 3 it is the least measured that holds
-// every region of the contact stability map at h = 1/240 s (docs/contacts.md, "Substeps and
-// iterations"): at 480 per second and one sweep a stack of 5 boxes rocked and walked 6.5 mm in
-// 10 s, and a 1000 kg cube sank 2 cm into the 1 kg cube it stood on.
-inline constexpr double kSubstepRate = 1440.0;
+// Fixed effort: the scene set world.substeps or world.iterations, and every island gets exactly
+// that (the other at its fixed default), the same bits as before effort on demand existed.
+inline bool fixed_effort(const ContactSettings& s) {
+    return s.substeps > 0 || s.iterations > 0;
+}
 
-// Substeps of one step h: settings.substeps, or the fewest with h / n <= 1 / kSubstepRate.
+// Fixed effort's automatic substep rate, per second, and its solve sweeps. With 3 sweeps it is the
+// least measured that holds every region of the contact stability map at h = 1/240 s
+// (docs/contacts.md, "Substeps and sweeps"): at 480 per second and one sweep a stack of 5 boxes
+// rocked and walked 6.5 mm in 10 s, and a 1000 kg cube sank 2 cm into the 1 kg cube it stood on.
+inline constexpr double kSubstepRate = 1440.0;
+inline constexpr int kFixedIterations = 3;
+
+// Fixed effort's substeps of one step h: settings.substeps, or the fewest with h / n <=
+// 1 / kSubstepRate.
 inline int substep_count(const ContactSettings& s, double h) {
     if (s.substeps > 0) return s.substeps;
     return std::max(1, static_cast<int>(std::ceil(h * kSubstepRate - 1e-9)));
+}
+
+// Fixed effort's solve sweeps per substep.
+inline int iteration_count(const ContactSettings& s) {
+    return s.iterations > 0 ? s.iterations : kFixedIterations;
 }
 
 } // namespace tumble::physics

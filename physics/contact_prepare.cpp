@@ -159,22 +159,10 @@ void ContactStage::prepare_constraints(const Model& m, const State& s, ThreadPoo
         if (in_constraint_[i]) constrained_.push_back(i);
 }
 
-// The substep h' = h / n and the soft contact's coefficients at that substep (contact_solver.h).
+// The step's solver context, for the impacts (which look ahead over the whole step); each group
+// of islands gets its substep's own (contact_effort.cpp).
 void ContactStage::prepare_context(const Model& m) {
-    substeps_ = substep_count(m.contact, h_);
-    iterations_ = m.contact.iterations;
-    relax_iterations_ = m.contact.relax_iterations;
-    const double h = h_ / substeps_;
-    ctx_ = SolverContext{};
-    const double hertz = m.contact.contact_hertz_fraction / h;
-    const double zeta = m.contact.contact_damping_ratio;
-    ctx_.soft = make_softness(hertz, zeta, h);
-    ctx_.soft_static = make_softness(2.0 * hertz, zeta, h);
-    ctx_.h = h;
-    ctx_.inv_h = 1.0 / h;
-    ctx_.step_h = h_;
-    ctx_.max_push_speed = m.contact.max_push_speed;
-    ctx_.restitution_threshold = m.contact.restitution_threshold;
+    ctx_ = solver_context(m, h_, fixed_effort(m.contact) ? substep_count(m.contact, h_) : 1);
 }
 
 } // namespace tumble::physics

@@ -6,18 +6,11 @@
 // one of them (contact_wake.cpp) and the whole island wakes. A sleeping island's contacts keep
 // their manifolds and impulses, so it wakes warm-started.
 #include "physics/contact_stage.h"
+#include "physics/union_find.h"
 
 #include <algorithm>
 
 namespace tumble::physics {
-namespace {
-
-int root(std::vector<int>& parent, int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
-
-} // namespace
 
 void ContactStage::sleep(const Model& m, State& s) {
     stats_.awake = 0;
@@ -36,20 +29,20 @@ void ContactStage::sleep(const Model& m, State& s) {
     const ContactCache& contacts = s.contacts; // this step's, stored by store()
     for (int k = 0; k < contacts.size(); ++k) {
         const int a = pair_first(contacts.pair[k]), b = pair_second(contacts.pair[k]);
-        if (awake_[a] && awake_[b]) parent_[root(parent_, a)] = root(parent_, b);
+        if (awake_[a] && awake_[b]) parent_[union_root(parent_, a)] = union_root(parent_, b);
     }
     // Per island root: the shortest slow time and the smallest member (the island's name).
     island_slow_.assign(n, 1e300);
     island_min_.assign(n, n);
     for (int i : m.dynamic_bodies) {
         if (!awake_[i]) continue;
-        const int r = root(parent_, i);
+        const int r = union_root(parent_, i);
         island_slow_[r] = std::min(island_slow_[r], s.sleep.slow_time[i]);
         island_min_[r] = std::min(island_min_[r], i);
     }
     for (int i : m.dynamic_bodies) {
         if (!awake_[i]) continue;
-        const int r = root(parent_, i);
+        const int r = union_root(parent_, i);
         if (island_slow_[r] < m.contact.time_to_sleep) continue;
         s.sleep.asleep[i] = 1;
         s.sleep.island[i] = island_min_[r];

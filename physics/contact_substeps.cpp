@@ -6,20 +6,31 @@
 namespace tumble::physics {
 
 void ContactStage::substeps(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool) {
-    stats_.substeps = substeps_;
-    stats_.sweeps = iterations_ + relax_iterations_;
-    const int nc = static_cast<int>(constrained_.size());
-    solved_v_.resize(nc);
-    before_x_.resize(nc);
     Stopwatch clock;
-    for (int sub = 0; sub < substeps_; ++sub) {
-        predict(m, s, pool);
-        solve(s, pool);
-        profile_.solve += clock.lap();
-        integrate_substep(m, s, integrate, pool);
+    plan_effort(m, s); // contact_effort.cpp
+    profile_.prepare += clock.lap();
+    stats_.substeps = stats_.effort.substeps_max;
+    stats_.sweeps = stats_.effort.sweeps_max;
+    for (int k = 0; k < group_count_; ++k) {
+        const SubstepGroup& g = groups_[k];
+        solved_v_.resize(g.bodies.size());
+        before_x_.resize(g.bodies.size());
+        for (int sub = 0; sub < g.substeps; ++sub) {
+            predict(m, s, pool, g);
+            solve(s, pool, g);
+            profile_.solve += clock.lap();
+            integrate_substep(m, s, integrate, pool, g);
+            profile_.integrate += clock.lap();
+            relax(m, s, pool, g);
+            profile_.solve += clock.lap();
+        }
+    }
+    if (!fixed_) {
+        // Bodies in no constraint cannot touch anything within the step (their speculative
+        // margins say so): the integrator takes them over the whole step h.
+        integrate_all(m, s, integrate, h_, free_, pool);
+        scale_warm_start(false); // the State holds impulses per step (contact_effort.cpp)
         profile_.integrate += clock.lap();
-        relax(m, s, pool);
-        profile_.solve += clock.lap();
     }
 }
 
@@ -30,79 +41,76 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
     integrate_awake(m, s, integrate, h_, pool);
     stats_.substeps = 1;
     stats_.sweeps = 0;
+    stats_.effort = {};
     stats_.impacts = 0;
     profile_.integrate = clock.lap();
 }
 
 // a. Predict: the solver sees the velocities the loads would give at the substep's end.
-void ContactStage::predict(const Model& m, State& s, ThreadPool& pool) {
-    track_motion(m, s, pool);
-    follow_bodies(pool);
-    for (int i : constrained_) {
-        s.v[i] += ctx_.h * bodies_.accel[i];
-        s.w[i] += ctx_.h * bodies_.ang_accel[i];
+void ContactStage::predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
+    track_motion(m, s, pool, g);
+    follow_bodies(pool, g);
+    for (int i : g.bodies) {
+        s.v[i] += g.ctx.h * bodies_.accel[i];
+        s.w[i] += g.ctx.h * bodies_.ang_accel[i];
     }
 }
 
-// b. Warm start, then `iterations` Gauss-Seidel sweeps with the soft push-out. One sweep carries a
-// change of load one contact down a stack per substep; a stack of 5 boxes then rocked, and a cube
-// 1000 times heavier than the one below it slid off it (docs/contacts.md).
-void ContactStage::solve(State& s, ThreadPool& pool) {
-    for_each_colour(pool, [&](int begin, int end, int) {
-        for (int c = begin; c < end; ++c)
-            warm_start(manifolds_[c], &points_[manifolds_[c].first], bodies_, s);
+// b. Warm start, then the solve sweeps with the soft push-out (contact_sweeps.cpp). One sweep
+// carries a change of load one contact down a stack per substep; with one sweep of fixed effort a
+// stack of 5 boxes rocked, and a cube 1000 times heavier than the one below it slid off it
+// (docs/contacts.md).
+void ContactStage::solve(State& s, ThreadPool& pool, const SubstepGroup& g) {
+    for_each_listed(pool, g.slots, g.starts, [&](int c, int) {
+        warm_start(manifolds_[c], &points_[manifolds_[c].first], bodies_, s);
     });
-    for (int sweep = 0; sweep < iterations_; ++sweep) sweep_constraints(s, pool, true);
-}
-
-// One Gauss-Seidel sweep over every constraint, colour by colour; with the push-out bias (solve)
-// or without (relax).
-void ContactStage::sweep_constraints(State& s, ThreadPool& pool, bool use_bias) {
-    for_each_colour(pool, [&](int begin, int end, int) {
-        for (int c = begin; c < end; ++c)
-            solve_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, use_bias,
-                           s);
-    });
+    sweeps(s, pool, g, true);
 }
 
 // c. Free flight by the named integrator. Bodies in contact hand it the velocity before the loads
 // (it adds them back) and then move by h' times the solved velocity, the symplectic position
-// update the constraints assumed; see step.cpp for why.
+// update the constraints assumed; see step.cpp for why. Fixed effort integrates every awake body
+// at each substep, as before effort on demand; on demand only the group's bodies.
 void ContactStage::integrate_substep(const Model& m, State& s, IntegrateFn integrate,
-                                     ThreadPool& pool) {
-    const double h = ctx_.h;
-    const int nc = static_cast<int>(constrained_.size());
-    for (int k = 0; k < nc; ++k) {
-        const int i = constrained_[k];
+                                     ThreadPool& pool, const SubstepGroup& g) {
+    const double h = g.ctx.h;
+    const int nb = static_cast<int>(g.bodies.size());
+    for (int k = 0; k < nb; ++k) {
+        const int i = g.bodies[k];
         solved_v_[k] = s.v[i];
         before_x_[k] = s.x[i];
         s.v[i] -= h * bodies_.accel[i];
         s.w[i] -= h * bodies_.ang_accel[i];
     }
-    integrate_awake(m, s, integrate, h, pool);
-    for (int k = 0; k < nc; ++k) {
-        const int i = constrained_[k];
+    if (fixed_)
+        integrate_awake(m, s, integrate, h, pool);
+    else
+        integrate_all(m, s, integrate, h, g.bodies, pool);
+    for (int k = 0; k < nb; ++k) {
+        const int i = g.bodies[k];
         s.x[i] = before_x_[k] + h * solved_v_[k];
         s.v[i] = solved_v_[k];
     }
 }
 
-// d. Relax: solve again without the push-out bias, so that it moved positions only. Two sweeps:
-// one left a pair of boxes pushed apart face on face with 2.4% of the push as kinetic energy.
-void ContactStage::relax(const Model& m, State& s, ThreadPool& pool) {
-    track_motion(m, s, pool);
-    follow_bodies(pool);
-    for (int sweep = 0; sweep < relax_iterations_; ++sweep) sweep_constraints(s, pool, false);
+// d. Relax: solve again without the push-out bias, so that it moved positions only. Fixed effort
+// makes two sweeps: one left a pair of boxes pushed apart face on face with 2.4% of the push as
+// kinetic energy.
+void ContactStage::relax(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
+    track_motion(m, s, pool, g);
+    follow_bodies(pool, g);
+    sweeps(s, pool, g, false);
 }
 
 // Motion of each constrained body since the start of the step, and its world inverse inertia
 // I_w^-1 = R I_body^-1 R^T at the current orientation. A top spinning at 75 rad/s turns 0.3 rad in
 // a step; impulses applied through the inertia of the step's start changed w by the wrong amount,
 // and a spinning top on a plane gained energy (+0.5% in 2 s with 8 substeps).
-void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool) {
-    pool.for_ranges(static_cast<int>(constrained_.size()), 512, [&](int begin, int end, int) {
+void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool,
+                                const SubstepGroup& g) {
+    pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int i = constrained_[k];
+            const int i = g.bodies[k];
             bodies_.delta[i] = s.x[i] - bodies_.x0[i];
             if (bodies_.rotates[i])
                 bodies_.turn[i] = (s.q[i] * bodies_.q0[i].conjugate()).toRotationMatrix();
@@ -116,10 +124,10 @@ void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool
 
 // Anchors and effective masses at the bodies' current orientation (follow_manifold,
 // contact_solver.cpp), for the manifolds with a body that turns.
-void ContactStage::follow_bodies(ThreadPool& pool) {
-    for_each_colour(pool, [&](int begin, int end, int) {
-        for (int c = begin; c < end; ++c)
-            follow_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_);
+void ContactStage::follow_bodies(ThreadPool& pool, const SubstepGroup& g) {
+    if (!g.turns) return; // follow_manifold would leave every manifold as it is
+    for_each_listed(pool, g.slots, g.starts, [&](int c, int) {
+        follow_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_);
     });
 }
 
@@ -129,7 +137,7 @@ void ContactStage::integrate_awake(const Model& m, State& s, IntegrateFn integra
                                    ThreadPool& pool) {
     for (std::size_t k = 0; k < sleeping_.size(); ++k)
         sleep_x_[k] = s.x[sleeping_[k]], sleep_q_[k] = s.q[sleeping_[k]];
-    integrate_all(m, s, integrate, h, pool);
+    integrate_all(m, s, integrate, h, m.dynamic_bodies, pool);
     for (std::size_t k = 0; k < sleeping_.size(); ++k) {
         const int i = sleeping_[k];
         s.x[i] = sleep_x_[k], s.q[i] = sleep_q_[k];
@@ -137,13 +145,12 @@ void ContactStage::integrate_awake(const Model& m, State& s, IntegrateFn integra
     }
 }
 
-// The integrator over every dynamic body, in fixed contiguous ranges per worker: a body's update
+// The integrator over the listed bodies, in fixed contiguous ranges per worker: a body's update
 // touches only its own state, so the bits are those of one thread. An integrator that fails
 // (midpoint's Newton solve throws DivergenceError) may do so on any worker; the error of the
 // lowest range is rethrown, which is the body a single thread would have stopped at.
 void ContactStage::integrate_all(const Model& m, State& s, IntegrateFn integrate, double h,
-                                 ThreadPool& pool) {
-    const std::span<const int> all(m.dynamic_bodies);
+                                 std::span<const int> all, ThreadPool& pool) {
     integrate_errors_.assign(pool.size(), nullptr);
     pool.for_ranges(static_cast<int>(all.size()), 256, [&](int begin, int end, int worker) {
         try {

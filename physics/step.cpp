@@ -30,17 +30,26 @@
 //               Newton collisions, swept until no impact is left, energy-consistent with the bounce
 //               happening inside the step; an isolated bounce is moved to its moment of contact
 //               once the substeps are done (contact_impacts.cpp).
-//   5. substeps n = ceil(h / (1/1440 s)) times (contact_model.h), with h' = h / n
-//               (contact_substeps.cpp):
+//   5. substeps the effort of each island of bodies in contact (contact_islands.cpp,
+//               contact_effort.cpp): n substeps of h' = h / n, the fewest that keep its
+//               contacts' sag within the contact tolerance and its bodies' turn within 0.3 rad,
+//               and 1-3 solve and 1-2 relax sweeps by what its constraints link; islands with
+//               the same n are stepped together (contact_substeps.cpp), each substep:
 //        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact; anchors and
 //                      effective masses follow the bodies' turn since the step's start
-//        b. solve      warm start, then 3 Gauss-Seidel sweeps: soft non-penetration (pushes
-//                      overlap out as a stiff damped spring), Coulomb friction with two
-//                      tangents clamped to the disc mu lambda_n (contact_solver.h)
-//        c. integrate  the named integrator over h' for every awake body (rotation, gyroscopic
-//                      term, free flight); bodies in contact then move by x += h' v_solved
-//        d. relax      2 more sweeps without the push-out bias, so position correction never
-//                      becomes kinetic energy
+//        b. solve      warm start, then the Gauss-Seidel sweeps (contact_sweeps.cpp): soft
+//                      non-penetration (pushes overlap out as a stiff damped spring), Coulomb
+//                      friction with two tangents clamped to the disc mu lambda_n
+//                      (contact_solver.h)
+//        c. integrate  the named integrator over h' for the group's bodies (rotation,
+//                      gyroscopic term, free flight); bodies in contact then move by
+//                      x += h' v_solved
+//        d. relax      the relax sweeps without the push-out bias, so position correction
+//                      never becomes kinetic energy
+//               Bodies in no constraint fly over the whole step h. A scene that sets
+//               world.substeps or world.iterations fixes the effort instead: n and the sweeps
+//               alike in every island, every awake body integrated at each substep (the stage
+//               before issue 28, bit for bit).
 //   6. store    impulses into this step's contacts, which become the State's contact cache (the
 //               warm start of the next step; contact_store.cpp).
 //   7. sleep    islands slow for long enough fall asleep (contact_sleep.cpp).

@@ -9,6 +9,8 @@
 #include "io/interrupt.h"
 #include "physics/error_estimate.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -56,13 +58,22 @@ void print_contacts(const physics::Model& m) {
     }
     int shapes = 0;
     for (int i = 0; i < m.body_count(); ++i) shapes += !m.is_dynamic(i);
-    const int substeps = physics::substep_count(m.contact, m.dt);
     std::printf("  contacts       on: %s (first of %lld pairs checked); %d bodies collide "
-                "(%d static, %zu dynamic); %d substep%s of %.3g ms per step, %d solve and %d relax "
-                "sweeps each; ",
-                t.why.c_str(), t.pairs_checked, m.body_count(), shapes, m.dynamic_bodies.size(),
-                substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps, m.contact.iterations,
-                m.contact.relax_iterations);
+                "(%d static, %zu dynamic); ",
+                t.why.c_str(), t.pairs_checked, m.body_count(), shapes, m.dynamic_bodies.size());
+    if (physics::fixed_effort(m.contact)) {
+        const int substeps = physics::substep_count(m.contact, m.dt);
+        std::printf("effort fixed by the scene: %d substep%s of %.3g ms per step, %d solve and "
+                    "%d relax sweeps each; ",
+                    substeps, substeps == 1 ? "" : "s", 1e3 * m.dt / substeps,
+                    physics::iteration_count(m.contact), m.contact.relax_iterations);
+    } else {
+        std::printf("effort on demand: each island of bodies in contact gets the substeps that "
+                    "keep its contacts' sag within the contact tolerance %.3g mm and its turn "
+                    "within 0.3 rad per substep, and 1-3 solve and 1-2 relax sweeps each "
+                    "(docs/contacts.md); ",
+                    1e3 * m.contact.tolerance);
+    }
     if (m.contact.sleeping)
         std::printf("sleeping on (bodies slower than %g m/s for %g s stop)\n",
                     m.contact.sleep_speed, m.contact.time_to_sleep);
@@ -122,6 +133,18 @@ void print_error_estimate(const Scene& scene, const physics::Model& m) {
                 m.passes.contacts ? "; a body's estimate stops at its first contact or sleep" : "");
 }
 
+// The effort the contact solver spends on this scene, counted over a pilot run of its first second
+// (or the whole run if shorter): effort on demand is decided while the scene runs.
+void print_effort(const Scene& scene, const Timeline& tl) {
+    Simulation pilot = make_simulation(scene, tl.h);
+    if (!pilot.model.passes.contacts) return;
+    const double seconds = std::min(1.0, scene.duration);
+    const auto steps = static_cast<long long>(std::ceil(seconds / tl.h - 1e-9));
+    for (long long k = 0; k < steps; ++k) pilot.step();
+    std::printf("contact effort, counted over the first %.3g s (%lld steps): %s\n", seconds, steps,
+                effort_summary(pilot).c_str());
+}
+
 // The contact stability map's cases this scene resembles, each run at the scene's settings
 // (app/study/contact_check.h); a case that fails is a warning.
 void print_contact_checks(const physics::Model& m, const physics::State& s) {
@@ -166,6 +189,7 @@ int run_explain(const SceneOptions& opts) {
                     "(the integrator is the scene's; \"auto\" would choose one)\n",
                     scene.accuracy.tolerance->rotation, scene.accuracy.tolerance->position);
     print_error_estimate(scene, sim.model);
+    print_effort(scene, tl);
     print_contact_checks(sim.model, sim.state);
     return kOk;
 }

@@ -138,6 +138,8 @@ void print_summary(const RenderCommand& cmd, const Scene& scene, const Timeline&
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
     for (const std::string& line : estimate_summary(sim))
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
+    if (const std::string e = effort_summary(sim); !e.empty())
+        std::fprintf(stderr, "tumble: %s\n", e.c_str());
     report_tolerance(scene, sim);
     std::fprintf(stderr, "tumble: wrote %s\n", sink.describe().c_str());
     if (!sink.note().empty()) std::fprintf(stderr, "tumble: note: %s\n", sink.note().c_str());

@@ -14,6 +14,9 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o) {
                     "R[,P]: the largest error of each body over the run, rad (and m; default R): "
                     "picks the cheapest integrator and step that meet it, or checks the one "
                     "--integrator names (docs/accuracy.md)");
+    cmd->add_option("--contact-tolerance", o.run.contact_tolerance,
+                    "M: the largest sag of a loaded contact the contact solver's effort on demand "
+                    "accepts, m (world.contact_tolerance; docs/contacts.md)");
     cmd->add_option("--duration", o.run.duration, "override the scene's duration, s");
     cmd->add_option("--dt", o.run.dt, "override the scene's time step, s");
     cmd->add_option("--threads", o.threads,

@@ -18,7 +18,7 @@ struct SceneOptions {
     bool quiet = false;
 };
 
-// Registers the scene argument, --integrator, --tolerance, --duration, --dt, --threads and --quiet.
+// Registers the scene argument, --integrator, --tolerance, --contact-tolerance, --duration, --dt, --threads and --quiet.
 void add_scene_options(CLI::App* cmd, SceneOptions& o);
 
 // Registers --error-estimate[=T1,T2,...] and --no-error-estimate (render, simulate, explain).

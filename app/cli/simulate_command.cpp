@@ -85,6 +85,8 @@ void report(const SimulateCommand& cmd, const Scene& scene, const Simulation& si
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
     for (const std::string& line : estimate_summary(sim))
         std::fprintf(stderr, "tumble: %s\n", line.c_str());
+    if (const std::string e = effort_summary(sim); !e.empty())
+        std::fprintf(stderr, "tumble: %s\n", e.c_str());
     report_tolerance(scene, sim);
     if (interrupted && cmd.output != "-")
         std::fprintf(stderr,

@@ -121,6 +121,12 @@ void apply_request(Scene& scene, const RunRequest& opts) {
                              "expected a positive time step in seconds");
         scene.world.dt = *opts.dt;
     }
+    if (opts.contact_tolerance) {
+        if (!(*opts.contact_tolerance > 0.0) || !std::isfinite(*opts.contact_tolerance))
+            throw SceneError("--contact-tolerance", std::to_string(*opts.contact_tolerance),
+                             "expected a positive length in metres");
+        scene.world.contact.tolerance = *opts.contact_tolerance;
+    }
     apply_error_estimate(opts, scene);
     if (scene.accuracy.tolerance) { // a tolerance is met, and checked, through the estimate
         if (opts.no_error_estimate)

@@ -17,6 +17,7 @@ struct RunRequest {
     std::optional<std::string> tolerance;  // "R" or "R,P" (rad, m)
     std::optional<double> duration;        // s
     std::optional<double> dt;              // s
+    std::optional<double> contact_tolerance; // m: world.contact_tolerance
     // kEstimateOn, or "T1,T2,...": times in s; unset: the scene's world.error_estimate.
     std::optional<std::string> error_estimate;
     bool no_error_estimate = false;

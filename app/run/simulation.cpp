@@ -6,7 +6,8 @@ namespace tumble::app {
 
 Simulation make_simulation(const Scene& scene, double dt, int threads) {
     CheckedStart start = build_checked(scene, dt);
-    Simulation sim{std::move(start.model), std::move(start.state), nullptr, scene.source, {}, {}};
+    Simulation sim{
+        std::move(start.model), std::move(start.state), nullptr, scene.source, {}, {}, {}};
     for (const BodyLook& look : scene.looks) sim.body_names.push_back(look.name);
     sim.workspace =
         std::make_unique<physics::StepWorkspace>(sim.model.passes.contacts ? threads : 1);
@@ -16,6 +17,7 @@ Simulation make_simulation(const Scene& scene, double dt, int threads) {
 void Simulation::step() {
     try {
         physics::step(model, state, *workspace);
+        if (model.passes.contacts) effort.add(workspace->contacts.stats());
         if (estimate.estimator) advance_error_estimate(*this);
     } catch (const physics::ShadowDivergenceError& e) {
         throw physics::ShadowDivergenceError(e, e.main_step,
@@ -24,6 +26,11 @@ void Simulation::step() {
         throw physics::DivergenceError(e.body, e.step, e.quantity,
                                        source + ": " + with_body_names(body_names, e.what()));
     }
+}
+
+std::string effort_summary(const Simulation& sim) {
+    if (!sim.model.passes.contacts) return "";
+    return sim.effort.describe(sim.model.contact, sim.model.dt);
 }
 
 std::string threads_note(const Simulation& sim, int threads) {

@@ -83,6 +83,7 @@ void read_world(ObjectReader r, Scene& s) {
     if (auto v = r.optional("sleeping")) c.sleeping = v->boolean();
     if (auto v = r.optional("substeps")) c.substeps = v->integer();
     if (auto v = r.optional("iterations")) c.iterations = v->integer();
+    if (auto v = r.optional("contact_tolerance")) c.tolerance = v->number();
     if (auto v = r.optional("restitution_threshold")) c.restitution_threshold = v->number();
     if (auto v = r.optional("parallel_min_bodies")) c.parallel_min_bodies = v->integer();
     if (auto v = r.optional("error_estimate")) read_error_estimate(*v, s);

@@ -114,7 +114,8 @@ std::vector<ContactCheck> check_contact_regions(const Model& m, const State& s) 
     if (resting_sphere) add("rest", 0.0, "a sphere resting on a plane");
     const std::string integrator(physics::integrator_info(m.integrator).name);
     for (ContactCheck& c : out)
-        c.run = run_contact_case(c.c, integrator, m.dt, m.contact.substeps, m.contact.iterations);
+        c.run = run_contact_case(c.c, integrator, m.dt, m.contact.substeps, m.contact.iterations,
+                                 m.contact.tolerance);
     return out;
 }
 

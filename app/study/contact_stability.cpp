@@ -125,9 +125,10 @@ std::vector<int> contact_substep_settings(bool quick) {
 }
 
 ContactRun run_contact_case(const ContactCase& c, const std::string& integrator, double dt,
-                            int substeps, int iterations) {
+                            int substeps, int iterations, double tolerance) {
     scenes::Scene scene = scene_of(c, dt, substeps);
     scene.world.contact.iterations = iterations;
+    scene.world.contact.tolerance = tolerance;
     scene.world.integrator = physics::integrator_from_name(integrator).value();
     const Model model = physics::build_model(scene.world, scene.bodies);
     State state = physics::initial_state(model, scene.bodies);

@@ -37,15 +37,17 @@ std::vector<ContactCase> contact_cases();
 std::vector<int> contact_substep_settings(bool quick);
 
 // One run of a case: the worst value of its measure over the run (drift m, depth m, energy J) and
-// whether it held. `iterations`: solve sweeps per substep (the map uses the default; `tumble
-// explain` passes the scene's).
+// whether it held. `substeps` and `iterations` 0 with `tolerance`: effort on demand; either set:
+// fixed effort (the map uses the defaults and 8 fixed substeps; `tumble explain` passes the
+// scene's settings).
 struct ContactRun {
     double worst = 0.0;
     bool diverged = false;
     bool held = false;
 };
 ContactRun run_contact_case(const ContactCase& c, const std::string& integrator, double dt,
-                            int substeps, int iterations = physics::ContactSettings{}.iterations);
+                            int substeps, int iterations = 0,
+                            double tolerance = physics::kDefaultContactTolerance);
 
 struct ContactStabilityResult {
     ContactCase c;
