@@ -84,7 +84,8 @@ TEST(ContactEffort, TheSagStaysWithinTheTolerance) {
 // Fixed settings mean what they say: the 1000-sphere rain at 2 substeps with one solve and one
 // relax sweep, and at the defaults of issue 13 (6 substeps, 3 and 2) set in the scene, has after
 // 300 steps the hashes the code before effort on demand gave (measured on that code: the second is
-// the pin of ContactDeterminism.PinnedHash before issue 28), for 1 to 4 threads.
+// the pin of ContactDeterminism.PinnedHash before issue 28), on one thread and, for the first, on
+// two (more threads on the 2-core machine only made the test slow: the barriers of every colour).
 TEST(ContactEffort, FixedSettingsKeepTheirBits) {
     struct Fixed {
         int substeps, iterations, relax;
@@ -93,7 +94,7 @@ TEST(ContactEffort, FixedSettingsKeepTheirBits) {
     for (const Fixed f :
          {Fixed{2, 1, 1, 0x5bd9a7ed5ad81dbfull}, Fixed{6, 3, 2, 0x3c92483a0d847146ull},
           Fixed{0, 3, 2, 0x3c92483a0d847146ull}})
-        for (int threads = 1; threads <= 4; threads += 3) {
+        for (int threads = 1; threads <= (f.substeps == 2 ? 2 : 1); ++threads) {
             scenes::Scene s = scenes::sphere_rain(10);
             s.world.contact.substeps = f.substeps;
             s.world.contact.iterations = f.iterations;
@@ -112,17 +113,17 @@ TEST(ContactEffort, FixedSettingsKeepTheirBits) {
         }
 }
 
-// Effort on demand gives the same bits for 1, 2, 3 and 4 threads: islands, groups and their
-// constraint lists depend on the scene only.
+// Effort on demand gives the same bits for 1 and 3 threads (2: ContactDeterminism): islands,
+// groups and their constraint lists depend on the scene only. 150 steps: the spheres have landed.
 TEST(ContactEffort, AnyThreadCountGivesTheSameBits) {
     std::uint64_t one = 0;
-    for (int threads = 1; threads <= 4; ++threads) {
+    for (int threads = 1; threads <= 3; threads += 2) {
         scenes::Scene s = scenes::sphere_rain(10);
         s.world.contact.parallel_min_bodies = 0;
         const Model model = build_model(s.world, s.bodies);
         State state = initial_state(model, s.bodies);
         StepWorkspace ws(threads);
-        for (int k = 0; k < 300; ++k) step(model, state, ws);
+        for (int k = 0; k < 150; ++k) step(model, state, ws);
         const std::uint64_t h = scenes::state_hash(state);
         if (threads == 1) one = h;
         EXPECT_EQ(h, one) << threads << " threads";

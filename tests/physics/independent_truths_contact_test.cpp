@@ -132,9 +132,12 @@ TEST(IndependentTruths, PushingOverlappingSpheresApartAddsNoKineticEnergy) {
 // four points and turned the boxes, and one relax sweep, its impulses clamped at >= 0 per point,
 // did not take all of it back. With two (ContactSettings::relax_iterations): measured 3.0e-9 of
 // E_push at most (2 cm, 1/960 s), the boxes ending 1.45e-4 m apart after a 2 cm overlap (0.73%;
-// 5 mm: 9.6e-6 m, 0.19%): the overlap is gone to within 1% of it.
+// 5 mm: 9.6e-6 m, 0.19%): the overlap is gone to within 1% of it. That was fixed effort (2
+// substeps of 3 + 2 sweeps at 1/960 s). Effort on demand (issue 28) gives this pair one substep
+// of 2 solve and 2 relax sweeps: 4.4e-8 of E_push at most, the boxes ending 3.1e-4 m apart after
+// 2 cm (1.6%; 5 mm: 2.1e-5 m, 0.4%): the overlap is gone to within 2% of it.
 TEST(IndependentTruths, PushingOverlappingBoxesApartAddsNoKineticEnergy) {
-    expect_no_push_energy(true, 1e-2);
+    expect_no_push_energy(true, 2e-2);
 }
 
 } // namespace
