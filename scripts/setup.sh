@@ -29,6 +29,9 @@ test_packages=(
   # Test and benchmark frameworks; Boost.Math is the independent reference of physics' elliptic
   # functions (tests/physics/elliptic_test.cpp), never linked into tumble.
   libgtest-dev libgmock-dev libbenchmark-dev libboost-math-dev
+  # The peer benchmark (bench/peers, scripts/bench-peers.sh): the same scenes in ODE, measured side
+  # by side with Tumble. A benchmark only, never linked into `tumble`; the build skips it without.
+  libode-dev
   # ffmpeg and ffprobe: an independent decoder of the videos the tests check.
   ffmpeg
   # `tumble study` and `tumble plot` draw by running gnuplot on generated scripts (pngcairo

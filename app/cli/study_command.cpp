@@ -1,6 +1,7 @@
-// `tumble study [--quick] [-o DIR] [--threads N]`: runs the work-precision grid and the stability
-// map of free bodies and of contacts, then writes DIR/study.csv, DIR/study.json,
-// DIR/contact_stability.csv, DIR/plots/*.png and DIR/report.md.
+// `tumble study [--quick] [-o DIR] [--threads N] [--peers FILE]`: runs the work-precision grid, the
+// stability map of free bodies and of contacts and the contacts' effort settings, then writes
+// DIR/study.csv, DIR/study.json, DIR/contact_stability.csv, DIR/contact_effort.csv,
+// DIR/plots/*.png and DIR/report.md.
 #include "app/cli/failure.h"
 #include "app/cli/subcommand.h"
 #include "app/run/progress.h"
@@ -32,6 +33,7 @@ struct StudyCommand {
     int threads = 0;              // 0: one per hardware thread
     bool quiet = false;
     bool auto_check = false; // --auto: check "auto"'s plans against the exact answers
+    std::string peers;       // --peers FILE: ODE's points in the contacts' work-precision view
 };
 using Clock = std::chrono::steady_clock;
 
@@ -78,7 +80,8 @@ void print_summary(const Results& r, const std::string& dir) {
                     sci(headline_error(*rec.row)).c_str(), 1e3 * rec.row->cost_s);
     }
     std::printf(
-        "wrote %s/report.md, study.csv, study.json, contact_stability.csv and plots/ in %.1f s\n",
+        "wrote %s/report.md, study.csv, study.json, contact_stability.csv, contact_effort.csv and "
+        "plots/ in %.1f s\n",
         dir.c_str(), r.seconds_total);
 }
 
@@ -123,6 +126,12 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     const Clock::time_point t2 = Clock::now();
     r.contact_stability = contact_stability_map(cmd.quick, r.threads);
     r.seconds_contacts = seconds_since(t2);
+    const Clock::time_point t4 = Clock::now();
+    if (!cmd.quiet)
+        std::fprintf(stderr, "tumble study: contact effort settings (sphere rain, stack)\n");
+    std::vector<EffortPoint> effort = contact_effort_study(cmd.quick ? 1 : 3, r.threads);
+    r.contact_effort.insert(r.contact_effort.begin(), effort.begin(), effort.end()); // peers last
+    r.seconds_effort = seconds_since(t4);
     energy_traces(r, r.threads);
     if (cmd.auto_check) {
         const Clock::time_point t3 = Clock::now();
@@ -146,6 +155,7 @@ void measure_and_write(Results& r, const StudyCommand& cmd, Clock::time_point st
     write_csv(dir / "study.csv", r);
     write_json(dir / "study.json", r);
     write_contact_csv(dir / "contact_stability.csv", r);
+    write_text_atomic(dir / "contact_effort.csv", effort_csv(r.contact_effort));
     write_report(dir / "report.md", r);
     if (r.auto_checked) write_text_atomic(dir / "auto.csv", auto_csv(r.auto_cases));
 }
@@ -164,6 +174,7 @@ int run_study(const StudyCommand& cmd) {
     } catch (const io::FileError& e) {
         throw io::BadInput(e.what()); // before the run: the output folder cannot be used
     }
+    if (!cmd.peers.empty()) r.contact_effort = read_peer_points(cmd.peers); // bad input: now
     try {
         measure_and_write(r, cmd, start);
     } catch (const io::Interrupted&) {
@@ -187,6 +198,9 @@ Subcommand add_study_command(CLI::App& app) {
     st->add_option("--threads", cmd->threads, "worker threads (default: one per hardware thread)")
         ->check(CLI::PositiveNumber);
     st->add_flag("-q,--quiet", cmd->quiet, "no progress and no summary");
+    st->add_option("--peers", cmd->peers,
+                   "the peer benchmark's CSV (scripts/bench-peers.sh: bench/results/<machine>/"
+                   "peers.csv): ODE's points in the contacts' work-precision view");
     st->add_flag("--auto", cmd->auto_check,
                  "also check integrator \"auto\" against the exact answers at tolerances 1e-2 "
                  "to 1e-8: its estimate, whether it met them, its cost against the grid's "

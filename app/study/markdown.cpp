@@ -262,6 +262,7 @@ void write_report(const std::filesystem::path& file, const Results& r) {
     energy_section(o, r);
     stability_section(o, r);
     contact_section(o, r);
+    if (!r.contact_effort.empty()) o << effort_markdown(r.contact_effort);
     recommendation_section(o, r);
     if (r.auto_checked) o << "\n" << auto_markdown(r.auto_cases);
     write_text_atomic(file, o.str());

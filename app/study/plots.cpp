@@ -186,6 +186,7 @@ void write_plots(const fs::path& dir, const Results& r) {
     energy_plots(dir, r);
     stability_plots(dir, r);
     if (!r.contact_stability.empty()) contact_plots(dir, r);
+    if (!r.contact_effort.empty()) effort_plot(dir, r.contact_effort);
 }
 
 } // namespace tumble::app::study

@@ -3,6 +3,7 @@
 // with the recommendation table) and, through study_plots.h, the PNG plots it links to.
 #include "app/study/analysis.h"
 #include "app/study/auto_check.h"
+#include "app/study/contact_effort.h"
 #include "app/study/contact_stability.h"
 #include "app/study/runner.h"
 #include "app/study/stability.h"
@@ -24,12 +25,14 @@ struct Results {
     std::vector<Recommendation> recommendations;
     std::vector<StabilityResult> stability;
     std::vector<ContactStabilityResult> contact_stability;
-    std::string energy_problem; // the problem and step of the energy-against-time plot
+    std::vector<EffortPoint> contact_effort; // the contacts' work-precision (contact_effort.h)
+    std::string energy_problem;              // the problem and step of the energy-against-time plot
     double energy_dt = 0.0, energy_t_end = 0.0;
     std::vector<EnergyTrace> energy;
     bool auto_checked = false; // `--auto`: the plans of "auto" checked (auto_check.h)
     std::vector<AutoCase> auto_cases;
     double seconds_grid = 0.0, seconds_stability = 0.0, seconds_contacts = 0.0;
+    double seconds_effort = 0.0;
     double seconds_total = 0.0;
     std::string machine; // CPU model and core count (/proc/cpuinfo)
     std::string build;   // compiler, build type, flags
