@@ -80,6 +80,37 @@ int coloured_pixels(const render::Image& img) {
     return n;
 }
 
+// The contacts' work-precision view (issue 28): every setting on both scenes; the fixed settings
+// cost exactly what they say (480x1: 2 substeps of 1 + 1 sweeps, 4 sweeps per contact point per
+// step; 1440x3: 6 substeps of 3 + 2, 30), and on the column of boxes a tighter contact tolerance
+// buys more substeps and a smaller sinking.
+void check_contact_effort(const fs::path& out, const std::string& report) {
+    const std::vector<CsvRow> rows = read_csv(out / "contact_effort.csv");
+    ASSERT_EQ(rows.size(), 2u * 7u);
+    std::map<std::string, const CsvRow*> stack;
+    for (const CsvRow& row : rows) {
+        const std::string& setting = row.f.at("setting");
+        EXPECT_GT(row.num("us_per_step"), 0.0) << setting;
+        if (setting == "480x1" || setting == "1440x3") {
+            const bool old = setting == "480x1";
+            EXPECT_EQ(row.num("substeps_per_body"), old ? 2.0 : 6.0) << row.f.at("scene");
+            EXPECT_EQ(row.num("sweeps_per_point"), old ? 2.0 * 2.0 : 6.0 * 5.0)
+                << row.f.at("scene");
+        }
+        if (row.f.at("scene") == "stack") stack[setting] = &row;
+    }
+    const CsvRow& loose = *stack.at("tolerance 1 mm");
+    const CsvRow& tight = *stack.at("tolerance 0.01 mm");
+    std::printf("[measured] column of 10: 1 mm: %g mm, %g substeps; 0.01 mm: %g mm, %g substeps\n",
+                loose.num("error_mm"), loose.num("substeps_per_body"), tight.num("error_mm"),
+                tight.num("substeps_per_body"));
+    EXPECT_GT(tight.num("substeps_per_body"), loose.num("substeps_per_body"));
+    EXPECT_LT(tight.num("error_mm"), loose.num("error_mm"));
+    EXPECT_NE(report.find("## Contacts: what each effort setting buys"), std::string::npos);
+    EXPECT_NE(report.find("(plots/contact-effort.png)"), std::string::npos);
+    EXPECT_GT(coloured_pixels(render::read_png(out / "plots" / "contact-effort.png")), 500);
+}
+
 // One quick study checked every way (a quick study is the suite's costliest run: 71 s in Release,
 // 363 s under ASan): its outputs, missing parent folders created (the one output rule of issue 14),
 // and the same errors from one thread as from two.
@@ -239,6 +270,7 @@ TEST(Study, QuickStudyWritesConsistentOutputs) {
         EXPECT_EQ(img.width, 900) << png;
         EXPECT_GT(coloured_pixels(img), 500) << png;
     }
+    check_contact_effort(out, report);
 
     // Each row is computed by one thread from its own state: only the timings may change.
     ASSERT_EQ(run_tumble(dir, "study --quick -q -o one --threads 1").exit_code, 0);
