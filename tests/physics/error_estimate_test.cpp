@@ -221,13 +221,23 @@ TEST(ErrorEstimate, RefusesAMainRunThatSkippedAStep) {
     EXPECT_THROW(e.advance(sim.state), std::logic_error);
 }
 
-// The shadow's model: h/2 with the main run's number of contact substeps per step.
+// The shadow's model: h/2, with the main run's number of contact substeps per step where the
+// effort is fixed.
 TEST(ErrorEstimate, ShadowHalvesTheStepAndEverySubstep) {
     Sim sim(scenes::ball_drop(0.8, 1.0, 1.0 / 240));
-    const Model shadow = half_step_model(sim.model);
+    // Fixed effort (world.iterations set): every awake body steps in the contact substeps; the
+    // shadow keeps their count, so each is halved.
+    Model fixed = sim.model;
+    fixed.contact.iterations = 3;
+    const Model shadow = half_step_model(fixed);
     EXPECT_EQ(shadow.dt, sim.model.dt / 2);
     EXPECT_EQ(substep_count(shadow.contact, shadow.dt), 6); // 6 at 1/240 s (1440 per second)
-    EXPECT_EQ(substep_count(sim.model.contact, sim.model.dt), 6);
+    EXPECT_EQ(substep_count(fixed.contact, fixed.dt), 6);
+    // Effort on demand (the default, issue 28): a body in no contact flies over the whole step,
+    // which the shadow halves; the shadow's islands choose their own substeps from h / 2.
+    const Model on_demand = half_step_model(sim.model);
+    EXPECT_EQ(on_demand.dt, sim.model.dt / 2);
+    EXPECT_FALSE(fixed_effort(on_demand.contact));
 }
 
 } // namespace
