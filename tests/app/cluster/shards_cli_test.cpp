@@ -49,11 +49,12 @@ TEST(ShardsCli, JoinedShardsDecodeToTheFramesOfASingleRender) {
                             "\"$TUMBLE\" -q -- " +
                             kLook + " > plan.sh && sh plan.sh");
     ASSERT_EQ(plan.exit_code, 0) << plan.err;
-    // Tumble's own lines (a sanitizer's report, e.g. LeakSanitizer's summary, is no concern here).
+    // Tumble's own lines (a sanitizer's report, e.g. LeakSanitizer's summary, is no concern here):
+    // 6 a shard, its checkpoint note and its summary (with the contact effort's line).
     int said = 0;
     std::istringstream lines(plan.err);
     for (std::string line; std::getline(lines, line);) said += line.starts_with("tumble: ");
-    EXPECT_EQ(said, 3 * 5) << "each shard prints its checkpoint note and its summary: " << plan.err;
+    EXPECT_EQ(said, 3 * 6) << "each shard prints its checkpoint note and its summary: " << plan.err;
     EXPECT_NE(plan.err.find("continuing from ck/frame_000040.tck (frame 40)"), std::string::npos);
     // Given out of order: the join sorts them by range.
     const CliResult join = run_tumble(dir, "join out/joined.part002.mp4 out/joined.part000.mp4 "
