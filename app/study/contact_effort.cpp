@@ -1,5 +1,5 @@
 #include "app/study/contact_effort.h"
-#include "app/study/gnuplot.h"
+#include "app/gnuplot/gnuplot.h"
 #include "app/study/runner.h"
 #include "io/bad_input.h"
 #include "physics/build.h"
@@ -46,12 +46,6 @@ scenes::Scene scene_for(const std::string& name, const Setting& s) {
     return scene;
 }
 
-double thread_seconds() {
-    timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
 // One run: its CPU time per step, and (when `measure`) its precision and effort.
 double run_once(const std::string& name, const Setting& s, bool measure, EffortPoint& p) {
     const scenes::Scene scene = scene_for(name, s);
@@ -84,7 +78,7 @@ double run_once(const std::string& name, const Setting& s, bool measure, EffortP
     return 1e6 * seconds / steps;
 }
 
-std::string number(double v, const char* format = "%.3g") {
+std::string effort_number(double v, const char* format = "%.3g") {
     char text[32];
     std::snprintf(text, sizeof text, format, v);
     return text;
@@ -151,10 +145,10 @@ std::string effort_csv(const std::vector<EffortPoint>& points) {
     std::string out = "scene,setting,tolerance_m,substeps,iterations,us_per_step,error_mm,"
                       "sweeps_per_point,substeps_per_body,peer\n";
     for (const EffortPoint& p : points)
-        out += p.scene + ',' + p.setting + ',' + number(p.tolerance) + ',' +
+        out += p.scene + ',' + p.setting + ',' + effort_number(p.tolerance) + ',' +
                std::to_string(p.substeps) + ',' + std::to_string(p.iterations) + ',' +
-               number(p.us_per_step, "%.4g") + ',' + number(p.error_mm, "%.4g") + ',' +
-               number(p.sweeps_per_point) + ',' + number(p.substeps_per_body) + ',' +
+               effort_number(p.us_per_step, "%.4g") + ',' + effort_number(p.error_mm, "%.4g") + ',' +
+               effort_number(p.sweeps_per_point) + ',' + effort_number(p.substeps_per_body) + ',' +
                (p.peer ? "1" : "0") + '\n';
     return out;
 }
@@ -176,9 +170,9 @@ std::string effort_markdown(const std::vector<EffortPoint>& points) {
               " | sweeps per point per step | substeps per body |\n|---|---|---|---|---|\n";
         for (const EffortPoint& p : points) {
             if (p.scene != scene) continue;
-            md += "| " + p.setting + " | " + number(p.us_per_step, "%.4g") + " | " +
-                  number(p.error_mm, "%.3g") + " | " + (p.peer ? "-" : number(p.sweeps_per_point)) +
-                  " | " + (p.peer ? "-" : number(p.substeps_per_body)) + " |\n";
+            md += "| " + p.setting + " | " + effort_number(p.us_per_step, "%.4g") + " | " +
+                  effort_number(p.error_mm, "%.3g") + " | " + (p.peer ? "-" : effort_number(p.sweeps_per_point)) +
+                  " | " + (p.peer ? "-" : effort_number(p.substeps_per_body)) + " |\n";
         }
         md += "\n";
     }
@@ -201,8 +195,8 @@ void effort_plot(const std::filesystem::path& dir, const std::vector<EffortPoint
             int rows = 0;
             for (const EffortPoint& p : points)
                 if (p.scene == scene && p.peer == peer) {
-                    o << number(std::max(p.error_mm, 1e-6), "%.6g") << ' '
-                      << number(p.us_per_step, "%.6g") << " \"" << p.setting << "\"\n";
+                    o << effort_number(std::max(p.error_mm, 1e-6), "%.6g") << ' '
+                      << effort_number(p.us_per_step, "%.6g") << " \"" << p.setting << "\"\n";
                     ++rows;
                 }
             o << "EOD\n";
@@ -214,7 +208,7 @@ void effort_plot(const std::filesystem::path& dir, const std::vector<EffortPoint
         o << plot << "\n";
     }
     o << "unset multiplot\n";
-    draw_with_gnuplot(
+    gnuplot::draw_with_gnuplot(
         {dir / "plots" / "contact-effort.png", "tumble study", 1200, 520, o.str(), {}});
 }
 

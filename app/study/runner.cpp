@@ -41,16 +41,13 @@ void parallel_for(int count, int threads, const std::function<void(int)>& fn) {
     if (error) std::rethrow_exception(error);
 }
 
-namespace {
-
-// The timing runs read this thread's CPU clock, not the wall clock: a step's cost is the work it
-// does, and on a shared machine (other builds, other workers of the study) the wall clock also
-// counts the time the thread was not running.
 double thread_seconds() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
+
+namespace {
 
 Errors not_a_number() {
     const double nan = std::numeric_limits<double>::quiet_NaN();

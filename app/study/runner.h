@@ -18,6 +18,11 @@ struct TimingSettings {
     double min_rep_seconds = 2e-3; // a repetition repeats the run until it lasts at least this
 };
 
+// This thread's CPU time, s. The timing runs read it, not the wall clock: a step's cost is the work
+// it does, and on a shared machine (other builds, other workers of the study) the wall clock also
+// counts the time the thread was not running.
+double thread_seconds();
+
 // Calls fn(i) for i in [0, count) on `threads` threads (the calling thread is one of them).
 // Exceptions are rethrown on the calling thread after every worker stopped.
 void parallel_for(int count, int threads, const std::function<void(int)>& fn);
