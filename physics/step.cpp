@@ -32,7 +32,7 @@
 //               once the substeps are done (contact_impacts.cpp).
 //   5. substeps the effort of each island of bodies in contact (contact_islands.cpp,
 //               contact_effort.cpp): n substeps of h' = h / n, the fewest that keep its
-//               contacts' sag within the contact tolerance and its bodies' turn within 0.3 rad,
+//               contacts' sag within the contact tolerance and its bodies' turn within 0.1 rad,
 //               and 1-3 solve and 1-2 relax sweeps by what its constraints link; islands with
 //               the same n are stepped together (contact_substeps.cpp), each substep:
 //        a. predict    v += h' F/m, w += h' I^-1 tau on bodies in contact; anchors and

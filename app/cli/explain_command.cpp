@@ -70,7 +70,7 @@ void print_contacts(const physics::Model& m) {
     } else {
         std::printf("effort on demand: each island of bodies in contact gets the substeps that "
                     "keep its contacts' sag within the contact tolerance %.3g mm and its turn "
-                    "within 0.3 rad per substep, and 1-3 solve and 1-2 relax sweeps each "
+                    "within 0.1 rad per substep, and 1-3 solve and 1-2 relax sweeps each "
                     "(docs/contacts.md); ",
                     1e3 * m.contact.tolerance);
     }
