@@ -208,6 +208,8 @@ class ContactStage {
     // Bodies the substeps touch.
     std::vector<int> constrained_, sleeping_;
     std::vector<Vec3> solved_v_, before_x_, sleep_x_;
+    std::vector<Vec3> predicted_v_, predicted_w_; // per group body: velocities before the solve
+    std::vector<std::uint8_t> pushed_; // per group body: the solve changed its velocities
     std::vector<std::exception_ptr> integrate_errors_; // per worker
     std::vector<Quat> sleep_q_;
     std::vector<std::uint8_t> impact_flags_;

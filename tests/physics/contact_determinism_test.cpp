@@ -120,7 +120,9 @@ TEST(ContactDeterminism, PinnedHash) {
     // Issue 28: effort on demand (the sphere rain's islands at their own substeps and sweeps).
     // Before it 0x3c92483a0d847146 (issue 13: 1440 substeps/s, 3 + 2 sweeps, turning anchors),
     // which the same scene with its effort fixed still gives (ContactEffort.FixedSettingsKeep...).
-    EXPECT_EQ(h, 0xcdd91a3c22e65de4ull);
+    // Then 0xcdd91a3c22e65de4, until a body the solve does not push kept the integrator's free
+    // flight (contact_substeps.cpp: lesson 10's ball landed early).
+    EXPECT_EQ(h, 0x582cfa8d5265e01bull);
 }
 
 } // namespace
