@@ -8,7 +8,7 @@
 #   peers.csv        medians per case (the summary table)
 #   peers_cpu.txt    what the machine is, when, and its load at the start and the end
 #   scripts/bench-peers.sh [build-dir] [--reps1000=5] [--reps8000=3] [--reps_stack=3]
-#                          [--only=rain1000,rain8000,stack10] [--space=sap|hash]
+#                          [--only=rain1000,rain8000,stack10] [--space=sap|hash] [--tolerances=MM,...]
 # Needs libode-dev (scripts/setup.sh installs it); without it bench/peers is not built and this
 # script says so.
 set -euo pipefail

@@ -27,6 +27,7 @@ struct Case {
     bool ode = false;
     int threads = 1;
     int substeps = 0, iterations = 0, relax = 0; // fixed settings; 0: the defaults
+    double tolerance = 0;                        // m: world.contact_tolerance; 0: the default
 };
 
 struct Outcome {
@@ -114,6 +115,7 @@ Outcome run_ode(const Case& c, const scenes::Scene& scene, OdeSpace space) {
 }
 
 Outcome run_tumble(const Case& c, scenes::Scene scene) {
+    if (c.tolerance > 0) scene.world.contact.tolerance = c.tolerance;
     if (c.substeps > 0) {
         scene.world.contact.substeps = c.substeps;
         scene.world.contact.iterations = c.iterations;
@@ -151,8 +153,15 @@ Outcome run_tumble(const Case& c, scenes::Scene scene) {
     return o;
 }
 
-std::vector<Case> cases_of(const std::string& scene) {
+std::vector<Case> cases_of(const std::string& scene, const std::vector<double>& tolerances) {
     std::vector<Case> out{{scene, "ode", true}, {scene, "tumble"}};
+    for (const double tol : tolerances) {
+        char name[48];
+        std::snprintf(name, sizeof name, "tumble/tol:%gmm", 1e3 * tol);
+        Case c{scene, name};
+        c.tolerance = tol;
+        out.push_back(c);
+    }
     if (scene == "rain8000") out.push_back({scene, "tumble/threads:2", false, 2});
     out.push_back({scene, "tumble/480x1", false, 1, 2, 1, 1});
     if (scene != "rain8000") out.push_back({scene, "tumble/1440x3", false, 1, 6, 3, 2});
@@ -185,7 +194,7 @@ int run_peers(const Options& opt) {
         if (!opt.only.empty() && ("," + opt.only + ",").find("," + name + ",") == std::string::npos)
             continue;
         const scenes::Scene scene = make_scene(name);
-        const std::vector<Case> cases = cases_of(name);
+        const std::vector<Case> cases = cases_of(name, opt.tolerances);
         std::map<std::string, std::vector<Outcome>> runs;
         for (int rep = 0; rep < opt.reps[k]; ++rep)
             for (const Case& c : cases) {

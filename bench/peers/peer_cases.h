@@ -4,6 +4,7 @@
 #include "bench/peers/ode_world.h"
 
 #include <string>
+#include <vector>
 
 namespace tumble::bench {
 
@@ -12,6 +13,9 @@ struct Options {
     std::string only;        // comma-separated scenes; empty: all
     std::string csv;         // where the summary goes as CSV; empty: nowhere
     OdeSpace space = OdeSpace::SweepAndPrune;
+    // Contact tolerances (world.contact_tolerance, m) to run effort on demand at besides the
+    // default, each as a case "tumble/tol:<mm>mm": what loosening the knob buys against ODE.
+    std::vector<double> tolerances;
 };
 
 int run_peers(const Options& options);

@@ -16,11 +16,13 @@
 // CPU time, two threads by the wall clock (and compared with one thread's wall clock).
 //
 //   peers_bench [--reps1000=5] [--reps8000=3] [--reps_stack=3] [--only=rain1000,rain8000,stack10]
-//               [--csv=FILE] [--space=hash|sap]
+//               [--csv=FILE] [--space=hash|sap] [--tolerances=MM,MM,...]
+// --tolerances adds effort on demand at these contact tolerances (mm) to every scene.
 #include "bench/peers/ode_world.h"
 #include "bench/peers/peer_cases.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -48,7 +50,21 @@ int main(int argc, char** argv) {
             opt.only = v;
         else if (const char* v = value("--csv="))
             opt.csv = v;
-        else if (const char* v = value("--space="))
+        else if (const char* v = value("--tolerances=")) {
+            std::istringstream list(v);
+            for (std::string mm; std::getline(list, mm, ',');) {
+                char* end = nullptr;
+                const double x = std::strtod(mm.c_str(), &end);
+                if (mm.empty() || *end != '\0' || !(x > 0)) {
+                    std::fprintf(stderr,
+                                 "peers_bench: --tolerances: '%s' is not a positive length "
+                                 "in mm\n",
+                                 mm.c_str());
+                    return 2;
+                }
+                opt.tolerances.push_back(1e-3 * x);
+            }
+        } else if (const char* v = value("--space="))
             opt.space = std::string(v) == "hash" ? OdeSpace::Hash : OdeSpace::SweepAndPrune;
         else {
             std::fprintf(stderr, "peers_bench: unknown argument %s\n", argv[i]);
