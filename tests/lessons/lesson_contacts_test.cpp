@@ -151,11 +151,14 @@ TEST(Lessons, FrictionHoldsBelowTheAngleOfReposeAndBallsRollAtFiveSevenths) {
     const double slid_a = fit(slid), rolled_a = fit(rolled);
     const double worst_roll_slip =
         *std::max_element(rolled.slip.begin() + long(rolled.slip.size() / 12), rolled.slip.end());
-    TUMBLE_MEASURED(held_moved, 1e-3);
+    // Held by static friction, it creeps no further than the contact tolerance the solver's effort
+    // follows (world.contact_tolerance; the default, as the scene sets none).
+    const double creep_bound = scene.world.contact.tolerance;
+    TUMBLE_MEASURED(held_moved, creep_bound);
     TUMBLE_MEASURED(std::abs(slid_a / slide_a - 1), 0.01);
     TUMBLE_MEASURED(std::abs(rolled_a / roll_a - 1), 0.01);
     TUMBLE_MEASURED(worst_roll_slip, 0.01);
-    EXPECT_LT(held_moved, 1e-3); // m: held by static friction
+    EXPECT_LT(held_moved, creep_bound); // m
     EXPECT_NEAR(slid_a / slide_a, 1.0, 0.01);
     EXPECT_NEAR(rolled_a / roll_a, 1.0, 0.01);
     EXPECT_LT(worst_roll_slip, 0.01); // m/s at the contact point: rolling, not sliding
