@@ -15,12 +15,6 @@ double largest_extent(const Aabb& b) {
     return (b.hi - b.lo).maxCoeff();
 }
 
-// The forward half of the 26 neighbours (a neighbour is forward if its first non-zero offset,
-// in z, y, x order, is positive): each pair of neighbouring cells is visited from one side only.
-constexpr int kForward[13][3] = {{1, -1, -1}, {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0},
-                                 {1, 0, 1},   {1, 1, -1}, {1, 1, 0},  {1, 1, 1},  {0, 1, -1},
-                                 {0, 1, 0},   {0, 1, 1},  {0, 0, 1}};
-
 } // namespace
 
 std::uint32_t BroadPhase::Grid::bucket(const Cell& c) const {
@@ -150,34 +144,61 @@ void BroadPhase::build(const Model& m, const std::vector<Aabb>& box,
     rest_grid_.build(resting_, cell_of_body_, box, cursor_);
 }
 
+// Entries of the cells (x0 .. x1, y, z), in cell order: in a dense grid one run of entries, as
+// the cells of a row are consecutive buckets (and every entry's cell is its bucket's); hashed, cell
+// by cell, skipping the other cells that share a bucket. The same entries in the same order either
+// way; the dense run saves the bucket look-up per cell, most of a query's time in a sphere rain.
+template <class Visit>
+void BroadPhase::Grid::row(std::int32_t x0, std::int32_t x1, std::int32_t y, std::int32_t z,
+                           Visit&& visit) const {
+    if (!dense) {
+        for (std::int32_t x = x0; x <= x1; ++x) {
+            const Cell c{x, y, z};
+            const std::uint32_t b = bucket(c);
+            for (int k = start[b]; k < start[b + 1]; ++k)
+                if (cell[k] == c) visit(k);
+        }
+        return;
+    }
+    const std::int64_t ry = std::int64_t{y} - lo.y, rz = std::int64_t{z} - lo.z;
+    if (ry < 0 || rz < 0 || ry >= ny || rz >= nz) return;
+    const std::int64_t rx0 = std::max<std::int64_t>(std::int64_t{x0} - lo.x, 0);
+    const std::int64_t rx1 = std::min<std::int64_t>(std::int64_t{x1} - lo.x, nx - 1);
+    if (rx0 > rx1) return;
+    const std::int64_t row_start = (rz * ny + ry) * nx;
+    const int end = start[static_cast<std::size_t>(row_start + rx1 + 1)];
+    for (int k = start[static_cast<std::size_t>(row_start + rx0)]; k < end; ++k) visit(k);
+}
+
 void BroadPhase::query(const Model& m, const std::vector<Aabb>& box,
                        const std::vector<ShapePose>& pose, const std::vector<double>& plane_margin,
                        int begin, int end, std::vector<std::uint64_t>& pairs) const {
     auto add = [&](int i, int j) { pairs.push_back(i < j ? pair_key(i, j) : pair_key(j, i)); };
-    // Entries of grid g in cell c overlapping box bi, passing `keep`.
-    auto scan = [&](const Grid& g, const Cell& c, const Aabb& bi, int i, auto keep) {
-        const std::uint32_t b = g.bucket(c);
-        for (int k = g.start[b]; k < g.start[b + 1]; ++k)
-            if (g.cell[k] == c && keep(g.body[k]) && overlap(bi, g.box[k])) add(i, g.body[k]);
-    };
     const bool resting = !rest_grid_.body.empty();
     for (int q = begin; q < end; ++q) {
         const int i = queries_[static_cast<std::size_t>(q)];
         const Aabb& bi = box[i];
         if (!is_large_[i]) {
             const Cell c = cell_of_body_[i];
-            // Awake partners: own cell (higher index only) and the forward half.
-            scan(awake_grid_, c, bi, i, [i](int j) { return j > i; });
-            for (const auto& d : kForward)
-                scan(awake_grid_, {c.x + d[2], c.y + d[1], c.z + d[0]}, bi, i,
-                     [](int) { return true; });
-            // Resting partners: all 27 cells.
+            // Entries of grid g in cells (c.x + dx0 .. c.x + dx1, c.y + dy, c.z + dz) overlapping
+            // bi, with a body index above `above`.
+            auto scan = [&](const Grid& g, int dx0, int dx1, int dy, int dz, int above) {
+                g.row(c.x + dx0, c.x + dx1, c.y + dy, c.z + dz, [&](int k) {
+                    if (g.body[k] > above && overlap(bi, g.box[k])) add(i, g.body[k]);
+                });
+            };
+            // Awake partners: own cell (higher index only) and the forward half of the 26
+            // neighbours (those whose first non-zero offset, in z, y, x order, is positive: each
+            // pair of neighbouring cells is visited from one side only): the three rows above,
+            // the row beside, the next cell.
+            scan(awake_grid_, 0, 0, 0, 0, i);
+            for (int dy = -1; dy <= 1; ++dy) scan(awake_grid_, -1, 1, dy, 1, -1);
+            scan(awake_grid_, -1, 1, 1, 0, -1);
+            scan(awake_grid_, 1, 1, 0, 0, -1);
+            // Resting partners: all 27 cells, row by row.
             if (resting)
                 for (int dz = -1; dz <= 1; ++dz)
-                    for (int dy = -1; dy <= 1; ++dy)
-                        for (int dx = -1; dx <= 1; ++dx)
-                            scan(rest_grid_, {c.x + dx, c.y + dy, c.z + dz}, bi, i,
-                                 [](int) { return true; });
+                    for (int dy = -1; dy <= 1; ++dy) scan(rest_grid_, -1, 1, dy, dz, -1);
         } else {
             // A large body is in no cell: it meets the small resting bodies here (few, or it
             // would not be large); small awake bodies find it in their scan of the large list.

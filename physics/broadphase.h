@@ -66,6 +66,10 @@ class BroadPhase {
         void build(const std::vector<int>& members, const std::vector<Cell>& cell_of,
                    const std::vector<Aabb>& boxes, std::vector<int>& cursor);
         std::uint32_t bucket(const Cell& c) const;
+        // visit(k) for the entries of cells (x0 .. x1, y, z), in cell order (broadphase.cpp).
+        template <class Visit>
+        void row(std::int32_t x0, std::int32_t x1, std::int32_t y, std::int32_t z,
+                 Visit&& visit) const;
     };
     bool in_grid(const Aabb& b) const;
     Cell cell_of(const Aabb& b) const; // only for boxes in_grid()
