@@ -1,23 +1,26 @@
 #!/usr/bin/env bash
 # Times a clean Release build of the `tumble` executable, the way README's first command builds it
 # (scripts/setup.sh --demo: tests and benchmarks off), with ccache off, one build at a time.
-#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble] [-DVAR=VALUE...]
+#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble] [--jobs-log=FILE] [-DVAR=VALUE...]
 # Prints each run and the median, and appends them to bench/results/<machine>/build_times.csv
 # (label, commit, run, seconds, load at start). The machine is shared: compare medians taken in one
-# sitting, and say the load.
+# sitting, and say the load. --jobs-log=FILE keeps the last run's job times (start and end of each
+# compile and link, ms, from ninja's .ninja_log), to see which jobs start late and leave a core idle.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reps=2
 label="$(git rev-parse --short HEAD)"
 target=tumble
+jobs_log=""
 defines=()
 for arg in "$@"; do
   case "$arg" in
     --reps=*) reps="${arg#--reps=}" ;;
     --label=*) label="${arg#--label=}" ;;
     --target=*) target="${arg#--target=}" ;;
+    --jobs-log=*) jobs_log="${arg#--jobs-log=}" ;;
     -D*) defines+=("$arg") ;;
-    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T, -DVAR=VALUE)" >&2
+    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T, --jobs-log=FILE, -DVAR=VALUE)" >&2
        exit 2 ;;
   esac
 done
@@ -45,6 +48,7 @@ for run in $(seq 1 "$reps"); do
   echo "run $run: ${secs} s (load at start $load)"
   echo "$label,$(git rev-parse --short HEAD),$target,$run,$secs,$load" >> "$csv"
   times+=("$secs")
+  if [ -n "$jobs_log" ]; then cp "$scratch/b/.ninja_log" "$jobs_log"; fi
 done
 median=$(printf "%s\n" "${times[@]}" | sort -n | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}')
 echo "median of $reps: ${median} s"
