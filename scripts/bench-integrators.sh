@@ -14,15 +14,7 @@ fi
 cmake --build "$build" --target integrators_bench >&2
 out="bench/results/$(uname -n)"
 mkdir -p "$out"
-{
-  grep -m1 "model name" /proc/cpuinfo
-  grep -m1 "cpu MHz" /proc/cpuinfo
-  grep -m1 "cache size" /proc/cpuinfo
-  echo "logical cpus: $(nproc)"
-  uname -srm
-  date -u +"measured: %Y-%m-%d %H:%M UTC"
-  echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg) (timings are CPU-time medians)"
-} > "$out/cpu.txt"
+scripts/machine-info.sh "timings: CPU-time medians" > "$out/cpu.txt"
 "$build/bench/integrators_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/integrators.csv" --benchmark_out_format=csv \
   --summary="$out/integrators_summary.csv"

@@ -25,14 +25,6 @@ fi
 cmake --build "$build" --target peers_bench >&2
 out="bench/results/$(uname -n)"
 mkdir -p "$out"
-{
-  grep -m1 "model name" /proc/cpuinfo
-  grep -m1 "cache size" /proc/cpuinfo
-  echo "logical cpus: $(nproc)"
-  uname -srm
-  echo "ode: $(pkg-config --modversion ode)"
-  date -u +"measured: %Y-%m-%d %H:%M UTC"
-  echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
-} > "$out/peers_cpu.txt"
+scripts/machine-info.sh "ode: $(pkg-config --modversion ode)" > "$out/peers_cpu.txt"
 "$build/bench/peers/peers_bench" --csv="$out/peers.csv" "$@"
 echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/peers_cpu.txt"

@@ -19,14 +19,7 @@ fi
 cmake --build "$build" --target sphere_rain_bench >&2
 out="bench/results/$(uname -n)"
 mkdir -p "$out"
-{
-  grep -m1 "model name" /proc/cpuinfo
-  grep -m1 "cache size" /proc/cpuinfo
-  echo "logical cpus: $(nproc)"
-  uname -srm
-  date -u +"measured: %Y-%m-%d %H:%M UTC"
-  echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
-} > "$out/sphere_rain_cpu.txt"
+scripts/machine-info.sh > "$out/sphere_rain_cpu.txt"
 "$build/bench/sphere_rain_bench" --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/sphere_rain_runs.json" --benchmark_out_format=json \
   --summary="$out/sphere_rain.csv" "$@"
