@@ -22,17 +22,18 @@ function(tumble_unity target)
   endif()
 endfunction()
 
-# tumble_cold(<target>...): libraries whose code runs once per run or once per frame around the
-# hot loops (scene files, options, orchestration, reports), compiled -O2 in Release instead of
-# CMake's -O3. physics/ (every step) and render/ (every frame's pixels) keep -O3. What -O3 adds over
-# -O2 (more inlining, loop vectorisation and unrolling) pays in loops that run millions of times and
-# costs compile time in code that is mostly templates instantiated once (nlohmann-json, CLI11,
-# Eigen): measured with scripts/bench-build.sh, docs/engineering.md. The same bits either way:
-# neither level changes floating-point results (-ffp-contract=off, no -ffast-math), and the suite's
-# pinned hashes and goldens hold.
-function(tumble_cold)
+# tumble_cold(<level> <target>...): libraries whose code runs around the hot loops, compiled at
+# <level> in Release instead of CMake's -O3. physics/ (every step) and render/ (every frame's
+# pixels) keep -O3. What -O3 adds over -O2 (more inlining, loop vectorisation and unrolling) pays in
+# loops that run millions of times and costs compile time in code that is mostly templates
+# instantiated once (nlohmann-json, CLI11, Eigen); -O1 drops most inlining across the templates
+# too, for code that runs once per run (reading the scene, parsing options, writing reports).
+# Measured with scripts/bench-build.sh, docs/engineering.md. The same bits at every level: none
+# changes floating-point results (-ffp-contract=off, no -ffast-math), and the suite's pinned hashes
+# and goldens hold.
+function(tumble_cold level)
   foreach(target ${ARGN})
-    target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O2>)
+    target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:${level}>)
   endforeach()
 endfunction()
 
