@@ -52,14 +52,15 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
 void ContactStage::predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
     track_motion(m, s, pool, g);
     follow_bodies(pool, g);
-    const int nb = static_cast<int>(g.bodies.size());
-    for (int k = 0; k < nb; ++k) {
-        const int i = g.bodies[k];
-        s.v[i] += g.ctx.h * bodies_.accel[i];
-        s.w[i] += g.ctx.h * bodies_.ang_accel[i];
-        predicted_v_[k] = s.v[i];
-        predicted_w_[k] = s.w[i];
-    }
+    pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = g.bodies[k];
+            s.v[i] += g.ctx.h * bodies_.accel[i];
+            s.w[i] += g.ctx.h * bodies_.ang_accel[i];
+            predicted_v_[k] = s.v[i];
+            predicted_w_[k] = s.w[i];
+        }
+    });
 }
 
 // b. Warm start, then the solve sweeps with the soft push-out (contact_sweeps.cpp). One sweep
@@ -88,24 +89,29 @@ void ContactStage::integrate_substep(const Model& m, State& s, IntegrateFn integ
     const double h = g.ctx.h;
     const int nb = static_cast<int>(g.bodies.size());
     pushed_.resize(nb);
-    for (int k = 0; k < nb; ++k) {
-        const int i = g.bodies[k];
-        pushed_[k] = s.v[i] != predicted_v_[k] || s.w[i] != predicted_w_[k];
-        solved_v_[k] = s.v[i];
-        before_x_[k] = s.x[i];
-        s.v[i] -= h * bodies_.accel[i];
-        s.w[i] -= h * bodies_.ang_accel[i];
-    }
+    // Each loop touches only its own body's state: fixed ranges per worker, the bits of one thread.
+    pool.for_ranges(nb, 512, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = g.bodies[k];
+            pushed_[k] = s.v[i] != predicted_v_[k] || s.w[i] != predicted_w_[k];
+            solved_v_[k] = s.v[i];
+            before_x_[k] = s.x[i];
+            s.v[i] -= h * bodies_.accel[i];
+            s.w[i] -= h * bodies_.ang_accel[i];
+        }
+    });
     if (fixed_)
         integrate_awake(m, s, integrate, h, pool);
     else
         integrate_all(m, s, integrate, h, g.bodies, pool);
-    for (int k = 0; k < nb; ++k) {
-        const int i = g.bodies[k];
-        if (!fixed_ && !pushed_[k]) continue; // flew freely: the integrator's motion stands
-        s.x[i] = before_x_[k] + h * solved_v_[k];
-        s.v[i] = solved_v_[k];
-    }
+    pool.for_ranges(nb, 512, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = g.bodies[k];
+            if (!fixed_ && !pushed_[k]) continue; // flew freely: the integrator's motion stands
+            s.x[i] = before_x_[k] + h * solved_v_[k];
+            s.v[i] = solved_v_[k];
+        }
+    });
 }
 
 // d. Relax: solve again without the push-out bias, so that it moved positions only. Fixed effort
