@@ -2,6 +2,8 @@
 
 #include "app/regression/suite.h"
 
+#include <algorithm>
+
 namespace tumble::app::suite_fields {
 namespace {
 
@@ -28,6 +30,17 @@ Type name_type() {
 }
 
 } // namespace
+
+bool is_check_name(std::string_view name) {
+    // kNamePattern by hand: ASCII letters and digits (the pattern's ranges, whatever the locale),
+    // then also '_', '.' and '-'.
+    auto alnum = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    };
+    if (name.empty() || !alnum(name.front())) return false;
+    return std::all_of(name.begin(), name.end(),
+                       [&](char c) { return alnum(c) || c == '_' || c == '.' || c == '-'; });
+}
 
 const Table& compare() {
     static const Table t{

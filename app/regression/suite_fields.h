@@ -3,6 +3,8 @@
 // `tumble schema suite` prints. docs/regression-testing.md describes the same fields for people.
 #include "app/scene/field_table.h"
 
+#include <string_view>
+
 namespace tumble::app::suite_fields {
 
 const Table& suite();          // the whole file
@@ -14,7 +16,9 @@ const Table& state();          // one state check entry
 const Table& mask();           // a rectangle of pixels to ignore
 const Table& quantities();     // quantity -> absolute tolerance
 
-// A name usable in a check's name and in a golden's file name.
+// A name usable in a check's name and in a golden's file name: kNamePattern, as the schema gives
+// it to editors, and is_check_name(), the same test as the loader makes it.
 inline constexpr const char* kNamePattern = "^[A-Za-z0-9][A-Za-z0-9_.-]*$";
+bool is_check_name(std::string_view name);
 
 } // namespace tumble::app::suite_fields

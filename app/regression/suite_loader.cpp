@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <regex>
 #include <set>
 
 namespace tumble::app {
@@ -79,6 +78,17 @@ std::vector<std::int64_t> read_frames(ObjectReader& r, const SuiteScene& s) {
     return out;
 }
 
+// A "name" field's value: letters, digits, '_', '.' and '-' (fields::kNamePattern), as it becomes
+// part of a golden's file name: no '/' that would put the golden in another folder.
+std::string check_name(const FieldValue& v) {
+    std::string name = v.string();
+    if (!fields::is_check_name(name))
+        v.fail("expected a name of letters, digits, '_', '.' and '-' (starting with a letter or "
+               "digit), got " +
+               describe_json(v.value()));
+    return name;
+}
+
 void claim_name(Context& c, const JsonReader& at, const std::string& name) {
     const auto [it, fresh] = c.names.emplace(name, at.path());
     if (!fresh)
@@ -117,7 +127,7 @@ void read_image(ObjectReader r, SuiteScene& s, Context& c) {
             base.masks.push_back(read_mask(ObjectReader(v->at(i).reader(), fields::mask()),
                                            base.width, base.height));
     std::string label = base.overlay ? "_overlay" : "";
-    if (auto v = r.optional("name")) label = "_" + v->string();
+    if (auto v = r.optional("name")) label = "_" + check_name(*v);
     for (std::int64_t k : read_frames(r, s)) {
         ImageCheck check = base;
         check.frame = k;
@@ -184,7 +194,7 @@ void read_state(ObjectReader r, SuiteScene& s, Context& c) {
         read_quantities(ObjectReader(r.field("quantities").reader(), fields::quantities()));
     read_bodies(r, s.scene, check);
     check.frames = read_frames(r, s);
-    check.name = s.name + "_" + (r.has("name") ? r.field("name").string() : "states");
+    check.name = s.name + "_" + (r.has("name") ? check_name(r.field("name")) : "states");
     check.golden = c.goldens / (check.name + ".csv");
     claim_name(c, r.reader(), check.name);
     r.finish();
@@ -216,10 +226,10 @@ SuiteScene read_scene_entry(ObjectReader r, Context& c) {
     s.scene = std::move(plan.scene);
     s.timeline = plan.timeline;
     if (auto n = r.optional("name")) {
-        s.name = n->string();
+        s.name = check_name(*n);
     } else {
         s.name = scene_name(s.scene);
-        if (!std::regex_match(s.name, std::regex(fields::kNamePattern)))
+        if (!fields::is_check_name(s.name))
             scene.fail("the file's stem \"" + s.name + "\" cannot name checks; give a \"name\"");
     }
     if (auto images = r.optional("images"))

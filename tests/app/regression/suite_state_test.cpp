@@ -102,6 +102,17 @@ TEST(StateChecks, BadSuitesNameTheFileAndTheJsonPath) {
         {"same_name_twice", scene_with(R"("images": [{"frames": [0]}, {"every": 90}])"),
          "/scenes/0/images/1: two checks are named tossed_book_0000 (the other is at "
          "/scenes/0/images/0); give one of them a \"name\""},
+        // A check's name becomes a golden's file name: a '/' would put it in another folder.
+        {"image_name_leaving_the_folder",
+         scene_with(R"("images": [{"frames": [0], "name": "../x"}])"),
+         "/scenes/0/images/0/name: expected a name of letters, digits, '_', '.' and '-' (starting "
+         "with a letter or digit), got \"../x\""},
+        {"state_name_with_a_space",
+         scene_with(R"("states": [{"every": 10, "quantities": {"energy": 1}, "name": "a b"}])"),
+         "/scenes/0/states/0/name: expected a name of letters, digits, '_', '.' and '-'"},
+        {"scene_name_starting_with_a_dot",
+         scene_with(R"("name": ".hidden", "images": [{"frames": [0]}])"),
+         "/scenes/0/name: expected a name of letters, digits, '_', '.' and '-'"},
         {"no_checks", scene_with(R"("images": [])"),
          "/scenes/0: expected \"images\" or \"states\" checks"},
         {"bad_compare", scene_with(R"("images": [{"frames": [0], "compare": {"tolerance": 300}}])"),
