@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # Times a clean Release build of the `tumble` executable, the way README's first command builds it
 # (scripts/setup.sh --demo: tests and benchmarks off), with ccache off, one build at a time.
-#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble] [--jobs-log=FILE] [-DVAR=VALUE...]
+#   scripts/bench-build.sh [--reps=2] [--label=NAME] [--target=tumble] [--jobs=2] [--jobs-log=FILE] [-DVAR=VALUE...]
 # Prints each run and the median, and appends them to bench/results/<machine>/build_times.csv
 # (label, commit, run, seconds, load at start). The machine is shared: compare medians taken in one
 # sitting, and say the load. --jobs-log=FILE keeps the last run's job times (start and end of each
 # compile and link, ms, from ninja's .ninja_log), to see which jobs start late and leave a core idle.
+# --jobs=N: parallel jobs (default 2, the 2-core machine's cores; --jobs=0 leaves ninja's default,
+# cores + 2, which is what `cmake --build --preset` runs when the preset names none).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reps=2
 label="$(git rev-parse --short HEAD)"
 target=tumble
 jobs_log=""
+jobs=2
 defines=()
 for arg in "$@"; do
   case "$arg" in
@@ -19,8 +22,9 @@ for arg in "$@"; do
     --label=*) label="${arg#--label=}" ;;
     --target=*) target="${arg#--target=}" ;;
     --jobs-log=*) jobs_log="${arg#--jobs-log=}" ;;
+    --jobs=*) jobs="${arg#--jobs=}" ;;
     -D*) defines+=("$arg") ;;
-    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T, --jobs-log=FILE, -DVAR=VALUE)" >&2
+    *) echo "bench-build.sh: unknown option '$arg' (expected --reps=N, --label=NAME, --target=T, --jobs=N, --jobs-log=FILE, -DVAR=VALUE)" >&2
        exit 2 ;;
   esac
 done
@@ -31,6 +35,8 @@ csv="$out/build_times.csv"
 scratch="$(mktemp -d /tmp/tumble-build-bench.XXXXXX)"
 trap 'rm -rf "$scratch"' EXIT
 times=()
+jobs_arg=()
+[ "$jobs" = 0 ] || jobs_arg=(-j "$jobs")
 for run in $(seq 1 "$reps"); do
   rm -rf "$scratch/b"
   CCACHE_DISABLE=1 cmake -S . -B "$scratch/b" -G Ninja -DCMAKE_BUILD_TYPE=Release \
@@ -38,7 +44,7 @@ for run in $(seq 1 "$reps"); do
     "${defines[@]}" >/dev/null
   load="$(cut -d' ' -f1 /proc/loadavg)"
   start=$(date +%s.%N)
-  if ! CCACHE_DISABLE=1 cmake --build "$scratch/b" --target "$target" -j 2 > "$scratch/build.log" 2>&1; then
+  if ! CCACHE_DISABLE=1 cmake --build "$scratch/b" --target "$target" "${jobs_arg[@]}" > "$scratch/build.log" 2>&1; then
     tail -30 "$scratch/build.log" >&2
     echo "bench-build.sh: the build failed (run $run)" >&2
     exit 1
