@@ -116,11 +116,10 @@ if [ ${#missing[@]} -gt 0 ]; then
     [ ${#missing_core[@]} -eq 0 ] || install "${missing_core[@]}"
     cmake --preset "$preset" -DTUMBLE_WITH_APP=OFF -DTUMBLE_WITH_RENDER=OFF \
       -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF >&2
-    # One core fewer than the machine has: dpkg unpacks on one, and a compiler beside it would only
-    # slow both (2 jobs on 2 cores: the rest's install 45 -> 64 s, the core's build 28 -> 44 s).
-    jobs=$(( $(nproc) > 1 ? $(nproc) - 1 : 1 ))
-    echo "tumble setup: building the physics core ($jobs jobs) while the rest installs" >&2
-    setsid cmake --build --preset "$preset" -j "$jobs" >&2 &
+    # On every core: the install beside it took as long with one compile job as with two (62 and
+    # 64 s on a bare root, 2 cores): dpkg waits on the disk more than on the CPU.
+    echo "tumble setup: building the physics core while the rest installs" >&2
+    setsid cmake --build --preset "$preset" >&2 &
     early=$!
     mapfile -t missing < <(missing_of "${packages[@]}")
     install "${missing[@]}"
