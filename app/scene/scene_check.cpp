@@ -5,7 +5,6 @@
 #include "physics/build.h"
 #include "physics/overlaps.h"
 
-#include <cctype>
 #include <cstdio>
 #include <string_view>
 
@@ -38,23 +37,26 @@ std::string with_body_names(const std::vector<std::string>& names, const std::st
     // Each "body N" that stands as words of its own (no letter, digit or '_' just before "body"
     // or just after N), the regular expression \bbody (\d+)\b scanned by hand: <regex> alone
     // cost this library's build 3 s.
-    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
     auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    auto word = [&](char c) {
+        return digit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    };
     static constexpr std::string_view kBody = "body ";
     std::string out;
     std::size_t copied = 0;
     for (std::size_t at = what.find(kBody); at != std::string::npos;
          at = what.find(kBody, at + 1)) {
-        std::size_t end = at + kBody.size();
+        const std::size_t first = at + kBody.size();
+        std::size_t end = first;
         while (end < what.size() && digit(what[end])) ++end;
-        const bool digits = end > at + kBody.size();
-        if ((at > 0 && word(what[at - 1])) || !digits || (end < what.size() && word(what[end])))
+        if (end == first || (at > 0 && word(what[at - 1])) ||
+            (end < what.size() && word(what[end])))
             continue;
-        const std::string number = what.substr(at + kBody.size(), end - at - kBody.size());
-        const bool known = number.size() < 10 && std::stoul(number) < names.size();
+        // Nine digits or fewer fit an int; a longer number is no body of the scene either way.
+        const std::size_t i =
+            end - first < 10 ? std::stoul(what.substr(first, end - first)) : names.size();
         out.append(what, copied, at - copied);
-        out += known ? body_label(names[std::stoul(number)], int(std::stoul(number)))
-                     : what.substr(at, end - at);
+        out += i < names.size() ? body_label(names[i], int(i)) : what.substr(at, end - at);
         copied = end;
         at = end - 1;
     }
