@@ -116,8 +116,8 @@ if [ ${#missing[@]} -gt 0 ]; then
     [ ${#missing_core[@]} -eq 0 ] || install "${missing_core[@]}"
     cmake --preset "$preset" -DTUMBLE_WITH_APP=OFF -DTUMBLE_WITH_RENDER=OFF \
       -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF >&2
-    # On every core: the install beside it took as long with one compile job as with two (62 and
-    # 64 s on a bare root, 2 cores): dpkg waits on the disk more than on the CPU.
+    # On every core: one compile job instead of two did not shorten the install beside it (62
+    # against 64 s on a bare root, 2 cores; about 46 s with no compiler beside it).
     echo "tumble setup: building the physics core while the rest installs" >&2
     setsid cmake --build --preset "$preset" >&2 &
     early=$!
