@@ -56,8 +56,7 @@ double normal_acceleration(const SolverManifold& c, const SolverBodies& bodies) 
 
 bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
                      const SolverContext& ctx, State& s) {
-    const BodyView A = body_view(bodies, c.a, c.move_a);
-    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const BodyView A = body_a(c), B = body_b(c);
     // e = 0 never bounces: the solver's speculative contact stops the pair (as Box2D skips
     // restitution 0), so the impact pass costs nothing in scenes without bounce.
     if (c.restitution == 0.0) return false;
@@ -114,8 +113,7 @@ bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const So
     const double tau = h - t_hit;
     const double u = c.restitution * speed;
     // Velocity now such that the step ends with u + a tau, as after a bounce at t_hit.
-    const BodyView A = body_view(bodies, c.a, c.move_a);
-    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const BodyView A = body_a(c), B = body_b(c);
     Velocity va = load(s, c.a), vb = load(s, c.b);
     const double now = c.normal.dot(relative_velocity(va, vb, p.ra, p.rb));
     const double target = u - an * t_hit;

@@ -22,6 +22,14 @@ inline BodyView body_view(const SolverBodies& b, int i, bool movable) {
     return {b.inv_mass[i], b.inv_i[i], iso ? nullptr : &b.inv_inertia[i], true, b.rotates[i] != 0};
 }
 
+// The same views as kept in the constraint (prepare_manifold), read without the body arrays.
+inline BodyView body_a(const SolverManifold& c) {
+    return {c.inv_mass_a, c.inv_i_a, c.inertia_a, c.move_a != 0, c.rotates_a != 0};
+}
+inline BodyView body_b(const SolverManifold& c) {
+    return {c.inv_mass_b, c.inv_i_b, c.inertia_b, c.move_b != 0, c.rotates_b != 0};
+}
+
 // I_w^-1 v
 inline Vec3 inv_inertia_times(const BodyView& b, const Vec3& v) {
     return b.inv_inertia ? Vec3(*b.inv_inertia * v) : Vec3(b.inv_i * v);
@@ -40,6 +48,17 @@ inline void store(State& s, int i, bool movable, const Velocity& vel) {
     if (!movable) return;
     s.v[i] = vel.v;
     s.w[i] = vel.w;
+}
+
+// The same on the solver's packed records (the substeps' sweeps).
+inline Velocity load(const SolverBody* sb, int i) {
+    return {sb[i].v, sb[i].w};
+}
+
+inline void store(SolverBody* sb, int i, bool movable, const Velocity& vel) {
+    if (!movable) return;
+    sb[i].v = vel.v;
+    sb[i].w = vel.w;
 }
 
 inline Vec3 relative_velocity(const Velocity& a, const Velocity& b, const Vec3& ra,

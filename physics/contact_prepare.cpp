@@ -35,14 +35,16 @@ void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& po
     bodies_.inv_mass.resize(n);
     bodies_.x0.resize(n);
     bodies_.q0.resize(n);
-    bodies_.delta.resize(n);
     bodies_.turn.resize(n);
     bodies_.rotates.resize(n);
     bodies_.rounding.resize(n);
     bodies_.accel.resize(n);
     bodies_.ang_accel.resize(n);
+    solver_bodies_.resize(n);
     pool.for_ranges(n, 256, [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i) {
+            // Static and sleeping bodies: v = w = 0 in the State, and they do not move.
+            solver_bodies_[i] = {s.v[i], s.w[i], Vec3::Zero()};
             bodies_.rounding[i] = m.shape[i].kind == ShapeKind::Capsule ? m.shape[i].radius : 0.0;
             if (!awake_[i]) continue;
             bodies_.isotropic[i] = m.isotropic[i];
@@ -54,7 +56,6 @@ void ContactStage::prepare_bodies(const Model& m, const State& s, ThreadPool& po
             bodies_.inv_mass[i] = m.inv_mass[i];
             bodies_.x0[i] = s.x[i];
             bodies_.q0[i] = s.q[i];
-            bodies_.delta[i] = Vec3::Zero();
             bodies_.turn[i] = Mat3::Identity();
             bodies_.rotates[i] = m.shape[i].kind != ShapeKind::Sphere;
             bodies_.accel[i] = m.inv_mass[i] * net_force(m, i);

@@ -43,6 +43,9 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
                       const State& s) {
     const BodyView A = body_view(bodies, c.a, c.move_a);
     const BodyView B = body_view(bodies, c.b, c.move_b);
+    c.inv_mass_a = A.inv_mass, c.inv_i_a = A.inv_i, c.inertia_a = A.inv_inertia;
+    c.inv_mass_b = B.inv_mass, c.inv_i_b = B.inv_i, c.inertia_b = B.inv_inertia;
+    c.rotates_a = A.rotates, c.rotates_b = B.rotates;
     const Vec3& n = c.normal;
     // Tangents: a fixed perpendicular of n (Box3D's choice of axis), and n x t1.
     c.t1 = std::abs(n.x()) >= 0.57735 ? Vec3(n.y(), -n.x(), 0.0).normalized()
@@ -75,8 +78,7 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
 // was kicked off its spin axis and gained energy without bound (1.5 E0 in one 1/120 s step with
 // friction, +1e14 J at 48 substeps without).
 void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies) {
-    const BodyView A = body_view(bodies, c.a, c.move_a);
-    const BodyView B = body_view(bodies, c.b, c.move_b);
+    const BodyView A = body_a(c), B = body_b(c);
     if (!A.rotates && !B.rotates) return;
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
@@ -86,11 +88,9 @@ void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverB
     }
 }
 
-void warm_start(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
-                State& s) {
-    const BodyView A = body_view(bodies, c.a, c.move_a);
-    const BodyView B = body_view(bodies, c.b, c.move_b);
-    Velocity va = load(s, c.a), vb = load(s, c.b);
+void warm_start(const SolverManifold& c, const SolverPoint* points, SolverBody* sb) {
+    const BodyView A = body_a(c), B = body_b(c);
+    Velocity va = load(sb, c.a), vb = load(sb, c.b);
     for (int k = 0; k < c.count; ++k) {
         const SolverPoint& p = points[k];
         if (no_impulse(p.normal_impulse, p.friction_impulse)) continue; // nothing to warm with
@@ -99,21 +99,21 @@ void warm_start(const SolverManifold& c, const SolverPoint* points, const Solver
         apply(A, va, p.ra, -impulse);
         apply(B, vb, p.rb, impulse);
     }
-    store(s, c.a, c.move_a, va);
-    store(s, c.b, c.move_b, vb);
+    store(sb, c.a, c.move_a, va);
+    store(sb, c.b, c.move_b, vb);
 }
 
-void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                    const SolverContext& ctx, bool use_bias, State& s) {
-    const BodyView A = body_view(bodies, c.a, c.move_a);
-    const BodyView B = body_view(bodies, c.b, c.move_b);
+void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverContext& ctx,
+                    bool use_bias, SolverBody* sb) {
+    const BodyView A = body_a(c), B = body_b(c);
     const Softness& soft = c.move_a && c.move_b ? ctx.soft : ctx.soft_static;
-    Velocity va = load(s, c.a), vb = load(s, c.b);
+    Velocity va = load(sb, c.a), vb = load(sb, c.b);
     const Vec3& n = c.normal;
-    // Motion of each centre since the start of the step; the anchors have turned with the bodies
-    // (follow_manifold), so the separation now is s = base + n.(dB + rB - dA - rA).
-    const Vec3 da = A.movable ? bodies.delta[c.a] : Vec3(Vec3::Zero());
-    const Vec3 db = B.movable ? bodies.delta[c.b] : Vec3(Vec3::Zero());
+    // Motion of each centre since the start of the step (zero for a body that does not move); the
+    // anchors have turned with the bodies (follow_manifold), so the separation now is
+    // s = base + n.(dB + rB - dA - rA).
+    const Vec3& da = sb[c.a].delta;
+    const Vec3& db = sb[c.b].delta;
 
     // Non-penetration.
     for (int k = 0; k < c.count; ++k) {
@@ -146,8 +146,8 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBo
         SolverPoint& p = points[k];
         friction_at_point(c, p, A, B, p.normal_impulse, p.friction_impulse, va, vb);
     }
-    store(s, c.a, c.move_a, va);
-    store(s, c.b, c.move_b, vb);
+    store(sb, c.a, c.move_a, va);
+    store(sb, c.b, c.move_b, vb);
 }
 
 } // namespace tumble::physics

@@ -61,16 +61,32 @@ struct SolverPoint {
 struct SolverManifold {
     int a, b;                    // bodies
     std::uint8_t move_a, move_b; // 1: awake dynamic (takes impulses); 0: static or asleep
-    Vec3 normal, t1, t2;         // unit, normal from a to b
+    std::uint8_t rotates_a, rotates_b; // the anchors turn with the body (not for a sphere)
+    Vec3 normal, t1, t2;               // unit, normal from a to b
     double friction, restitution;
+    // The bodies' mass properties as the kernels see them (contact_kernels.h, BodyView), kept in
+    // the constraint as Box2D v3 does, so that a sweep reads each body's velocities and nothing
+    // else of it: 0 for a body that does not move; I_w^-1 by pointer for a body that is not
+    // isotropic (turned with it, ContactStage::track_motion), else null and inv_i = 1/I.
+    double inv_mass_a, inv_mass_b, inv_i_a, inv_i_b;
+    const Mat3 *inertia_a, *inertia_b;
     int first, count; // points[first .. first + count)
     int cache;        // manifold index in the contact cache (impulse write-back)
 };
 
+// Per body, what every sweep reads and writes, in one record (Box2D v3's b2BodyState): the
+// velocities, copied from the State before a solve or relax and back after it
+// (contact_substeps.cpp), and the motion since the start of the step. A static or sleeping body
+// keeps v = w = delta = 0.
+struct SolverBody {
+    Vec3 v, w;
+    Vec3 delta; // motion of the centre of mass since the start of the step, at the last update
+};
+
 // Per body, indexed by body. Set for the awake bodies at the start of the step
-// (contact_prepare.cpp); delta, turn and inv_inertia then follow the bodies in constraints through
-// the substeps (updated before each predict and relax, ContactStage::track_motion in
-// contact_substeps.cpp).
+// (contact_prepare.cpp); turn and inv_inertia then follow the bodies in constraints through the
+// substeps (updated before each predict and relax, ContactStage::track_motion in
+// contact_substeps.cpp), as does SolverBody::delta.
 struct SolverBodies {
     std::vector<Mat3> inv_inertia; // world I_w^-1, at the orientation of the last update
     std::vector<double> inv_i;     // isotropic bodies: 1/I (then inv_inertia is not used)
@@ -78,7 +94,6 @@ struct SolverBodies {
     std::vector<double> inv_mass;
     std::vector<Vec3> x0; // centre of mass at the start of the step
     std::vector<Quat> q0;
-    std::vector<Vec3> delta;           // motion since the start of the step, at the last update
     std::vector<Mat3> turn;            // rotation since the start of the step, at the last update
     std::vector<std::uint8_t> rotates; // anchors turn with the body (not for spheres)
     std::vector<double> rounding;      // m: a capsule's radius (its anchors turn about its core)
@@ -104,12 +119,11 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
 // No-op unless a body of the manifold turns.
 void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies);
 
-void warm_start(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
-                State& state);
+void warm_start(const SolverManifold& c, const SolverPoint* points, SolverBody* solver_bodies);
 
 // One Gauss-Seidel sweep over one manifold: normal (soft if use_bias) then friction.
-void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                    const SolverContext& ctx, bool use_bias, State& state);
+void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverContext& ctx,
+                    bool use_bias, SolverBody* solver_bodies);
 
 // Impacts (restitution): see contact_impacts.cpp. Returns true if any impulse was applied.
 bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,

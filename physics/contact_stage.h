@@ -131,13 +131,15 @@ class ContactStage {
     void substeps(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
     void free_flight(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
     void predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g);
-    void solve(State& s, ThreadPool& pool, const SubstepGroup& g);
+    void solve(ThreadPool& pool, const SubstepGroup& g);
     void integrate_substep(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool,
                            const SubstepGroup& g);
     void relax(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g);
+    void load_velocities(const State& s, ThreadPool& pool, const SubstepGroup& g);
+    void store_velocities(State& s, ThreadPool& pool, const SubstepGroup& g);
     void follow_bodies(ThreadPool& pool, const SubstepGroup& g);
-    void sweeps(State& s, ThreadPool& pool, const SubstepGroup& g, bool use_bias);
-    void sweep_list(State& s, ThreadPool& pool, const SubstepGroup& g, const std::vector<int>& list,
+    void sweeps(ThreadPool& pool, const SubstepGroup& g, bool use_bias);
+    void sweep_list(ThreadPool& pool, const SubstepGroup& g, const std::vector<int>& list,
                     const std::vector<int>& starts, bool use_bias);
     void track_motion(const Model& m, const State& s, ThreadPool& pool, const SubstepGroup& g);
     void integrate_awake(const Model& m, State& s, IntegrateFn integrate, double h,
@@ -166,6 +168,7 @@ class ContactStage {
     std::vector<std::uint8_t> awake_; // dynamic and not asleep
     std::vector<std::uint8_t> in_constraint_;
     SolverBodies bodies_;
+    std::vector<SolverBody> solver_bodies_; // what the sweeps read and write, per body
 
     // Contacts found this step, becoming the State's cache at the end.
     BroadPhase broad_;

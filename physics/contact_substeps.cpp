@@ -19,7 +19,7 @@ void ContactStage::substeps(const Model& m, State& s, IntegrateFn integrate, Thr
         predicted_w_.resize(g.bodies.size());
         for (int sub = 0; sub < g.substeps; ++sub) {
             predict(m, s, pool, g);
-            solve(s, pool, g);
+            solve(pool, g);
             profile_.solve += clock.lap();
             integrate_substep(m, s, integrate, pool, g);
             profile_.integrate += clock.lap();
@@ -48,17 +48,19 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
     profile_.integrate = clock.lap();
 }
 
-// a. Predict: the solver sees the velocities the loads would give at the substep's end.
+// a. Predict: the solver sees the velocities the loads would give at the substep's end. From here
+// to the integrator the velocities of the group's bodies live in solver_bodies_.
 void ContactStage::predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
     track_motion(m, s, pool, g);
     follow_bodies(pool, g);
     pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int i = g.bodies[k];
-            s.v[i] += g.ctx.h * bodies_.accel[i];
-            s.w[i] += g.ctx.h * bodies_.ang_accel[i];
-            predicted_v_[k] = s.v[i];
-            predicted_w_[k] = s.w[i];
+            SolverBody& b = solver_bodies_[i];
+            b.v = s.v[i] + g.ctx.h * bodies_.accel[i];
+            b.w = s.w[i] + g.ctx.h * bodies_.ang_accel[i];
+            predicted_v_[k] = b.v;
+            predicted_w_[k] = b.w;
         }
     });
 }
@@ -67,11 +69,11 @@ void ContactStage::predict(const Model& m, State& s, ThreadPool& pool, const Sub
 // carries a change of load one contact down a stack per substep; with one sweep of fixed effort a
 // stack of 5 boxes rocked, and a cube 1000 times heavier than the one below it slid off it
 // (docs/contacts.md).
-void ContactStage::solve(State& s, ThreadPool& pool, const SubstepGroup& g) {
+void ContactStage::solve(ThreadPool& pool, const SubstepGroup& g) {
     for_each_listed(pool, g.slots, g.starts, [&](int c, int) {
-        warm_start(manifolds_[c], &points_[manifolds_[c].first], bodies_, s);
+        warm_start(manifolds_[c], &points_[manifolds_[c].first], solver_bodies_.data());
     });
-    sweeps(s, pool, g, true);
+    sweeps(pool, g, true);
 }
 
 // c. Free flight by the named integrator. Bodies in contact hand it the velocity before the loads
@@ -93,11 +95,12 @@ void ContactStage::integrate_substep(const Model& m, State& s, IntegrateFn integ
     pool.for_ranges(nb, 512, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int i = g.bodies[k];
-            pushed_[k] = s.v[i] != predicted_v_[k] || s.w[i] != predicted_w_[k];
-            solved_v_[k] = s.v[i];
+            const SolverBody& b = solver_bodies_[i];
+            pushed_[k] = b.v != predicted_v_[k] || b.w != predicted_w_[k];
+            solved_v_[k] = b.v;
             before_x_[k] = s.x[i];
-            s.v[i] -= h * bodies_.accel[i];
-            s.w[i] -= h * bodies_.ang_accel[i];
+            s.v[i] = b.v - h * bodies_.accel[i];
+            s.w[i] = b.w - h * bodies_.ang_accel[i];
         }
     });
     if (fixed_)
@@ -120,7 +123,30 @@ void ContactStage::integrate_substep(const Model& m, State& s, IntegrateFn integ
 void ContactStage::relax(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
     track_motion(m, s, pool, g);
     follow_bodies(pool, g);
-    sweeps(s, pool, g, false);
+    load_velocities(s, pool, g);
+    sweeps(pool, g, false);
+    store_velocities(s, pool, g);
+}
+
+// The group's velocities into the solver's records before a relax, and back after it.
+void ContactStage::load_velocities(const State& s, ThreadPool& pool, const SubstepGroup& g) {
+    pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = g.bodies[k];
+            solver_bodies_[i].v = s.v[i];
+            solver_bodies_[i].w = s.w[i];
+        }
+    });
+}
+
+void ContactStage::store_velocities(State& s, ThreadPool& pool, const SubstepGroup& g) {
+    pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = g.bodies[k];
+            s.v[i] = solver_bodies_[i].v;
+            s.w[i] = solver_bodies_[i].w;
+        }
+    });
 }
 
 // Motion of each constrained body since the start of the step, and its world inverse inertia
@@ -132,7 +158,7 @@ void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool
     pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int i = g.bodies[k];
-            bodies_.delta[i] = s.x[i] - bodies_.x0[i];
+            solver_bodies_[i].delta = s.x[i] - bodies_.x0[i];
             if (bodies_.rotates[i])
                 bodies_.turn[i] = (s.q[i] * bodies_.q0[i].conjugate()).toRotationMatrix();
             if (!bodies_.isotropic[i]) {

@@ -13,31 +13,32 @@
 
 namespace tumble::physics {
 
-void ContactStage::sweeps(State& s, ThreadPool& pool, const SubstepGroup& g, bool use_bias) {
+void ContactStage::sweeps(ThreadPool& pool, const SubstepGroup& g, bool use_bias) {
     ContactEffort& e = stats_.effort;
     if (fixed_) {
         const int count = use_bias ? fixed_iterations_ : fixed_relax_;
-        for (int k = 0; k < count; ++k) sweep_list(s, pool, g, g.slots, g.starts, use_bias);
+        for (int k = 0; k < count; ++k) sweep_list(pool, g, g.slots, g.starts, use_bias);
         e.point_sweeps += double(count) * points_.size();
         return;
     }
-    sweep_list(s, pool, g, g.slots, g.starts, use_bias);
+    sweep_list(pool, g, g.slots, g.starts, use_bias);
     e.point_sweeps += g.points;
     const std::vector<int>& second = use_bias ? g.solve2 : g.relax2;
     if (second.empty()) return;
-    sweep_list(s, pool, g, second, use_bias ? g.solve2_starts : g.relax2_starts, use_bias);
+    sweep_list(pool, g, second, use_bias ? g.solve2_starts : g.relax2_starts, use_bias);
     e.point_sweeps += use_bias ? g.solve2_points : g.relax2_points;
     if (!use_bias || g.solve3.empty()) return;
-    sweep_list(s, pool, g, g.solve3, g.solve3_starts, use_bias);
+    sweep_list(pool, g, g.solve3, g.solve3_starts, use_bias);
     e.point_sweeps += g.solve3_points;
 }
 
 // One sweep over the listed constraints, colour by colour.
-void ContactStage::sweep_list(State& s, ThreadPool& pool, const SubstepGroup& g,
+void ContactStage::sweep_list(ThreadPool& pool, const SubstepGroup& g,
                               const std::vector<int>& list, const std::vector<int>& starts,
                               bool use_bias) {
     for_each_listed(pool, list, starts, [&](int c, int) {
-        solve_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_, g.ctx, use_bias, s);
+        solve_manifold(manifolds_[c], &points_[manifolds_[c].first], g.ctx, use_bias,
+                       solver_bodies_.data());
     });
 }
 
