@@ -54,8 +54,8 @@ double normal_acceleration(const SolverManifold& c, const SolverBodies& bodies) 
 
 } // namespace
 
-bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                     const SolverContext& ctx, State& s) {
+bool resolve_impacts(const SolverManifold& c, const SolverPoint* points, PointAux* aux,
+                     const SolverBodies& bodies, const SolverContext& ctx, State& s) {
     const BodyView A = body_a(c), B = body_b(c);
     // e = 0 never bounces: the solver's speculative contact stops the pair (as Box2D skips
     // restitution 0), so the impact pass costs nothing in scenes without bounce.
@@ -66,10 +66,11 @@ bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverB
     Velocity va = load(s, c.a), vb = load(s, c.b);
     bool any = false;
     for (int k = 0; k < c.count; ++k) {
-        SolverPoint& p = points[k];
+        const SolverPoint& p = points[k];
+        PointAux& x = aux[k];
         const double vn = n.dot(relative_velocity(va, vb, p.ra, p.rb));
         if (vn >= -threshold) continue;
-        const double s0 = std::max(p.separation0, 0.0);
+        const double s0 = std::max(x.separation0, 0.0);
         // Closes within the step? The gap at its end under the symplectic update the solver uses
         // (s0 + vn h + a h^2, at most 1/2 a h^2 from free flight), with 0.1 mm to spare: a pair
         // arriving just at the end would otherwise reach the relax sweep, which stops it
@@ -79,30 +80,31 @@ bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverB
         const double out = c.restitution * speed;                               // u
         const double target = std::sqrt(std::max(out * out + 2.0 * an * s0, 0.0));
         const double impulse = p.normal_mass * (target - vn);
-        if (p.impact_normal == 0.0) p.impact_vn = vn; // the approach, for the in-step shift
-        p.impact_normal += impulse;
+        if (x.impact_normal == 0.0) x.impact_vn = vn; // the approach, for the in-step shift
+        x.impact_normal += impulse;
         apply(A, va, p.ra, -impulse * n);
         apply(B, vb, p.rb, impulse * n);
         any = true;
 
         // Friction during the impact, within this impact's Coulomb cone.
-        friction_at_point(c, p, A, B, p.impact_normal, p.impact_friction, va, vb);
+        friction_at_point(c, p, A, B, x.impact_normal, x.impact_friction, va, vb);
     }
     store(s, c.a, c.move_a, va);
     store(s, c.b, c.move_b, vb);
     return any;
 }
 
-bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
-                    const SolverContext& ctx, State& s, double& ds) {
+bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const PointAux* aux,
+                    const SolverBodies& bodies, const SolverContext& ctx, State& s, double& ds) {
     int hits = 0, k = 0;
     for (int j = 0; j < c.count; ++j)
-        if (points[j].impact_normal != 0.0) ++hits, k = j;
+        if (aux[j].impact_normal != 0.0) ++hits, k = j;
     if (hits != 1) return false;
     const SolverPoint& p = points[k];
+    const PointAux& x = aux[k];
     const double an = normal_acceleration(c, bodies);
     const double h = ctx.step_h;
-    const double s0 = std::max(p.separation0, 0.0), vn = p.impact_vn;
+    const double s0 = std::max(x.separation0, 0.0), vn = x.impact_vn;
     const double speed = std::sqrt(std::max(vn * vn - 2.0 * an * s0, 0.0));
     const double t_hit = 2.0 * s0 / (-vn + speed);
     // Counted as an impact but arriving after this step (within kArrival of the surface at its
@@ -137,7 +139,8 @@ void ContactStage::impacts(const Model& m, State& s, ThreadPool& pool) {
         std::fill(impact_flags_.begin(), impact_flags_.end(), 0);
         for_each_colour(pool, [&](int begin, int end, int worker) {
             for (int c = begin; c < end; ++c)
-                if (resolve_impacts(manifolds_[c], &points_[manifolds_[c].first], bodies_, ctx_, s))
+                if (resolve_impacts(manifolds_[c], &points_[manifolds_[c].first],
+                                    &aux_[manifolds_[c].first], bodies_, ctx_, s))
                     impact_flags_[worker] = 1;
         });
         if (std::find(impact_flags_.begin(), impact_flags_.end(), 1) == impact_flags_.end()) break;
@@ -155,7 +158,7 @@ void ContactStage::plan_impact_shifts(const Model& m, State& s) {
     impact_count_.assign(m.body_count(), 0);
     for (const SolverManifold& c : manifolds_) {
         bool hit = false;
-        for (int k = 0; k < c.count; ++k) hit |= points_[c.first + k].impact_normal != 0.0;
+        for (int k = 0; k < c.count; ++k) hit |= aux_[c.first + k].impact_normal != 0.0;
         if (!hit) continue;
         impact_count_[c.a] += c.move_a;
         impact_count_[c.b] += c.move_b;
@@ -165,7 +168,7 @@ void ContactStage::plan_impact_shifts(const Model& m, State& s) {
         if ((c.move_a && impact_count_[c.a] != 1) || (c.move_b && impact_count_[c.b] != 1))
             continue;
         double ds = 0.0;
-        if (!impact_in_step(c, &points_[c.first], bodies_, ctx_, s, ds)) continue;
+        if (!impact_in_step(c, &points_[c.first], &aux_[c.first], bodies_, ctx_, s, ds)) continue;
         const double ma = c.move_a ? m.inv_mass[c.a] : 0.0;
         const double mb = c.move_b ? m.inv_mass[c.b] : 0.0;
         if (c.move_a) shift_[c.a] = -ds * ma / (ma + mb) * c.normal, shifted_.push_back(c.a);

@@ -132,7 +132,8 @@ void ContactStage::load_need(const Model& m, const State& s) {
         const int slot = level_offset_[island] + std::min(la, lb);
         for (int j = 0; j < c.count; ++j) {
             const SolverPoint& p = points_[c.first + j];
-            if (p.separation0 > tolerance) continue; // not touching: carries nothing
+            if (aux_[c.first + j].separation0 > tolerance)
+                continue; // not touching: carries nothing
             ++level_points_[slot];
             level_mass_[slot] = std::min(level_mass_[slot], p.normal_mass);
         }

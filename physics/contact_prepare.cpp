@@ -122,6 +122,7 @@ void ContactStage::assign_slots() {
     }
     for (int c = 0; c < constraints; ++c) point_start_[c + 1] += point_start_[c];
     points_.resize(point_start_[constraints]);
+    aux_.resize(point_start_[constraints]);
 }
 
 // Each constraint from its manifold: bodies, materials, points with last step's impulses.
@@ -141,13 +142,14 @@ void ContactStage::prepare_constraints(const Model& m, const State& s, ThreadPoo
             c.count = next_.count[k];
             c.cache = k;
             SolverPoint* pts = &points_[c.first];
+            PointAux* aux = &aux_[c.first];
             for (int j = 0; j < c.count; ++j) {
                 const CachedPoint& q = next_.points[next_.first[k] + j];
                 pts[j].ra = q.point; // prepare_manifold() turns it into the anchors
-                pts[j].separation0 = q.separation;
+                aux[j].separation0 = q.separation;
                 pts[j].normal_impulse = q.normal_impulse;
             }
-            prepare_manifold(c, pts, bodies_, s);
+            prepare_manifold(c, pts, aux, bodies_, s);
             for (int j = 0; j < c.count; ++j) { // last step's friction on this step's tangents
                 const Vec3& f = next_.points[next_.first[k] + j].friction_impulse;
                 pts[j].friction_impulse[0] = f.dot(c.t1);

@@ -39,8 +39,8 @@ void point_masses(const SolverManifold& c, SolverPoint& p, const BodyView& A, co
 
 } // namespace
 
-void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                      const State& s) {
+void prepare_manifold(SolverManifold& c, SolverPoint* points, PointAux* aux,
+                      const SolverBodies& bodies, const State& s) {
     const BodyView A = body_view(bodies, c.a, c.move_a);
     const BodyView B = body_view(bodies, c.b, c.move_b);
     c.inv_mass_a = A.inv_mass, c.inv_i_a = A.inv_i, c.inertia_a = A.inv_inertia;
@@ -53,16 +53,17 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
     c.t2 = n.cross(c.t1);
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
+        PointAux& x = aux[k];
         // p.ra/p.rb hold the world contact point on entry (see contact_prepare.cpp).
         const Vec3 point = p.ra;
         p.ra = point - s.x[c.a];
         p.rb = point - s.x[c.b];
-        p.core_a = p.ra - bodies.rounding[c.a] * n; // A's core lies behind its surface (n: A to B)
-        p.core_b = p.rb + bodies.rounding[c.b] * n;
-        p.base_separation = p.separation0 - n.dot(p.rb - p.ra);
+        x.core_a = p.ra - bodies.rounding[c.a] * n; // A's core lies behind its surface (n: A to B)
+        x.core_b = p.rb + bodies.rounding[c.b] * n;
+        p.base_separation = x.separation0 - n.dot(p.rb - p.ra);
         point_masses(c, p, A, B);
-        p.impact_normal = p.impact_vn = 0.0;
-        p.impact_friction[0] = p.impact_friction[1] = 0.0;
+        x.impact_normal = x.impact_vn = 0.0;
+        x.impact_friction[0] = x.impact_friction[1] = 0.0;
     }
 }
 
@@ -77,13 +78,14 @@ void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies
 // body now has about that old lever arm: for the capsule, its small moment about its own axis. It
 // was kicked off its spin axis and gained energy without bound (1.5 E0 in one 1/120 s step with
 // friction, +1e14 J at 48 substeps without).
-void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies) {
+void follow_manifold(const SolverManifold& c, SolverPoint* points, const PointAux* aux,
+                     const SolverBodies& bodies) {
     const BodyView A = body_a(c), B = body_b(c);
     if (!A.rotates && !B.rotates) return;
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
-        if (A.rotates) p.ra = bodies.turn[c.a] * p.core_a + bodies.rounding[c.a] * c.normal;
-        if (B.rotates) p.rb = bodies.turn[c.b] * p.core_b - bodies.rounding[c.b] * c.normal;
+        if (A.rotates) p.ra = bodies.turn[c.a] * aux[k].core_a + bodies.rounding[c.a] * c.normal;
+        if (B.rotates) p.rb = bodies.turn[c.b] * aux[k].core_b - bodies.rounding[c.b] * c.normal;
         point_masses(c, p, A, B);
     }
 }

@@ -42,25 +42,32 @@ struct TangentMass {
     double k11, k12, k22, scalar;
 };
 
+// A contact point as every sweep reads it (120 bytes); what only the step's other stages read is
+// in PointAux, at the same index, so that a sweep streams no more than it uses.
 struct SolverPoint {
     Vec3 ra, rb;            // anchors from the centres of mass, world, turned with the bodies
-    Vec3 core_a, core_b;    // what turns with each body: the anchor at the start of the step,
-                            // moved by a capsule's radius onto its core segment
     double base_separation; // s0 - n.(rb0 - ra0): with the bodies' motion d, s = base + n.(dB +
                             // rB - dA - rA) at the current anchors
-    double separation0;     // s0, m
     double normal_mass;     // 1/k along n, at the current anchors and orientations
     TangentMass tangent_mass;
     double normal_impulse; // accumulated over the step (warm-started)
     double friction_impulse[2];
+};
+
+// The rest of a contact point: read when the anchors turn (follow_manifold), by the impacts and
+// by the effort's estimate of loads.
+struct PointAux {
+    Vec3 core_a, core_b;  // what turns with each body: the anchor at the start of the step,
+                          // moved by a capsule's radius onto its core segment
+    double separation0;   // s0, m
     double impact_normal; // impact pass: impulses of this step's impacts
     double impact_friction[2];
     double impact_vn; // the normal velocity the first impact met
 };
 
 struct SolverManifold {
-    int a, b;                    // bodies
-    std::uint8_t move_a, move_b; // 1: awake dynamic (takes impulses); 0: static or asleep
+    int a, b;                          // bodies
+    std::uint8_t move_a, move_b;       // 1: awake dynamic (takes impulses); 0: static or asleep
     std::uint8_t rotates_a, rotates_b; // the anchors turn with the body (not for a sphere)
     Vec3 normal, t1, t2;               // unit, normal from a to b
     double friction, restitution;
@@ -111,13 +118,14 @@ struct SolverContext {
 };
 
 // Effective masses, tangents, anchors; warm-start impulses already in `points`.
-void prepare_manifold(SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                      const State& state);
+void prepare_manifold(SolverManifold& c, SolverPoint* points, PointAux* aux,
+                      const SolverBodies& bodies, const State& state);
 
 // Anchors turned with their bodies (r = turn r0) and the effective masses recomputed with them and
 // the current I_w^-1: impulses go where the contact now is, through the inertia the body now has.
 // No-op unless a body of the manifold turns.
-void follow_manifold(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies);
+void follow_manifold(const SolverManifold& c, SolverPoint* points, const PointAux* aux,
+                     const SolverBodies& bodies);
 
 void warm_start(const SolverManifold& c, const SolverPoint* points, SolverBody* solver_bodies);
 
@@ -126,14 +134,14 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverCo
                     bool use_bias, SolverBody* solver_bodies);
 
 // Impacts (restitution): see contact_impacts.cpp. Returns true if any impulse was applied.
-bool resolve_impacts(const SolverManifold& c, SolverPoint* points, const SolverBodies& bodies,
-                     const SolverContext& ctx, State& state);
+bool resolve_impacts(const SolverManifold& c, const SolverPoint* points, PointAux* aux,
+                     const SolverBodies& bodies, const SolverContext& ctx, State& state);
 
 // After the impacts, for a manifold with one impacting point whose bodies had no other impact:
 // moves the bounce from the start of the step to the moment of contact. Sets the normal velocity
 // and writes the change `ds` of the separation to apply at the end of the step; false if the
 // manifold does not qualify.
-bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const SolverBodies& bodies,
-                    const SolverContext& ctx, State& state, double& ds);
+bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const PointAux* aux,
+                    const SolverBodies& bodies, const SolverContext& ctx, State& state, double& ds);
 
 } // namespace tumble::physics

@@ -174,7 +174,8 @@ void ContactStage::track_motion(const Model& m, const State& s, ThreadPool& pool
 void ContactStage::follow_bodies(ThreadPool& pool, const SubstepGroup& g) {
     if (!g.turns) return; // follow_manifold would leave every manifold as it is
     for_each_listed(pool, g.slots, g.starts, [&](int c, int) {
-        follow_manifold(manifolds_[c], &points_[manifolds_[c].first], bodies_);
+        follow_manifold(manifolds_[c], &points_[manifolds_[c].first], &aux_[manifolds_[c].first],
+                        bodies_);
     });
 }
 

@@ -33,9 +33,8 @@ void ContactStage::sweeps(ThreadPool& pool, const SubstepGroup& g, bool use_bias
 }
 
 // One sweep over the listed constraints, colour by colour.
-void ContactStage::sweep_list(ThreadPool& pool, const SubstepGroup& g,
-                              const std::vector<int>& list, const std::vector<int>& starts,
-                              bool use_bias) {
+void ContactStage::sweep_list(ThreadPool& pool, const SubstepGroup& g, const std::vector<int>& list,
+                              const std::vector<int>& starts, bool use_bias) {
     for_each_listed(pool, list, starts, [&](int c, int) {
         solve_manifold(manifolds_[c], &points_[manifolds_[c].first], g.ctx, use_bias,
                        solver_bodies_.data());
