@@ -15,10 +15,12 @@
 // last impulse (contact_islands.cpp). A body that turns (anything but a sphere) also gets enough
 // substeps to turn at most kTurnPerSubstep in one: its contact anchors follow it between substeps
 // (the sharp top at 100 rad/s sank 2.2 mm at one substep of 0.42 rad, 0.7 mm at two, 0.024 mm at
-// 0.1 rad). Counts are
-// powers of two, at most kMaxSubsteps, so that the State can hold each island's impulses per step
-// (n times a substep's) and a substep start from them divided by n, exactly, whatever the island's
-// count was in the step before (scale_warm_start).
+// 0.1 rad). The count is the fewest whole n that does both, at most kMaxSubsteps. (Until
+// 2026-11-28 it was the next power of two, which kept the State's per-step impulses exact when
+// divided by n; it gave the 8000-sphere rain 1.3x the body-substeps the sag asks for, and the
+// one-ulp rounding of a division by 3 or 5 does not matter to an impulse the next sweep changes.)
+// The State holds each island's impulses per step (n times a substep's) and a substep starts from
+// them divided by n, whatever the island's count was in the step before (scale_warm_start).
 //
 // Sweeps follow the island's constraints: one solve sweep for a body against supports only (one
 // sweep solves a lone manifold), two where bodies push on each other (the load crosses a contact
@@ -48,8 +50,9 @@ namespace {
 constexpr int kMaxSubsteps = 64;
 // Largest turn of a turning body in one substep, rad. Lesson 9's heavy tops (tips on a table,
 // friction 1, 55-120 rad/s at h = 1/480 s) at 0.3 rad got one substep and lost 93% of L_3 and 90%
-// of their energy in 6 s, the tip wandering 62 mm; at 0.1 rad (2-4 substeps) they keep E to 0.23%,
-// L_3 to 1.9e-4 and the tip within 1.0 mm (fixed 1440 substeps per second: 0.28%, 1.6e-4, 1.4 mm).
+// of their energy in 6 s, the tip wandering 62 mm; at 0.1 rad (2-3 substeps) they keep E to 0.32%,
+// L_3 to 3.7e-4 and the tip within 1.4 mm (fixed 1440 substeps per second: 0.28%, 1.6e-4, 1.4 mm;
+// with power-of-two counts, 2-4 substeps: 0.23%, 1.9e-4, 1.0 mm).
 constexpr double kTurnPerSubstep = 0.1;
 // Longest substep of effort on demand, s: an island gets at least h / kLongestSubstep substeps
 // (1 at the default h = 1/240 s). A ball bouncing at h = 1/60 s in one substep of 1/60 s missed its
@@ -60,9 +63,9 @@ constexpr double kLongestSubstep = 1.0 / 240.0;
 // sweep.
 constexpr double kHeavyRatio = 10.0;
 
-int power_of_two_at_least(double need) {
+int substeps_at_least(double need) {
     int n = 1;
-    while (n < need && n < kMaxSubsteps) n *= 2;
+    while (n < need && n < kMaxSubsteps) ++n;
     return n;
 }
 
@@ -146,7 +149,7 @@ void ContactStage::choose_effort(const Model& m, const State& s) {
     ContactEffort& e = stats_.effort;
     e.substeps_min = islands > 0 ? kMaxSubsteps : 0;
     for (int i = 0; i < islands; ++i) {
-        island_substeps_[i] = power_of_two_at_least(island_need_[i]);
+        island_substeps_[i] = substeps_at_least(island_need_[i]);
         e.capped_substeps += island_need_[i] > kMaxSubsteps;
         e.substeps_min = std::min(e.substeps_min, island_substeps_[i]);
         e.substeps_max = std::max(e.substeps_max, island_substeps_[i]);
@@ -159,16 +162,16 @@ void ContactStage::choose_effort(const Model& m, const State& s) {
 // in colour order (and those of its islands that take second sweeps) and their bodies in
 // ascending order. Bodies in no constraint fly freely.
 void ContactStage::form_groups(const Model& m) {
-    int used[8] = {}; // substep counts 1, 2, 4, ..., 64 in use
-    for (int n : island_substeps_) used[std::countr_zero(static_cast<unsigned>(n))] = 1;
-    int group_of_log[8];
+    int used[kMaxSubsteps + 1] = {}; // substep counts 1 .. kMaxSubsteps in use
+    for (int n : island_substeps_) used[n] = 1;
+    int group_of_log[kMaxSubsteps + 1];
     group_count_ = 0;
-    for (int k = 0; k < 8; ++k) group_of_log[k] = used[k] ? group_count_++ : -1;
+    for (int k = 0; k <= kMaxSubsteps; ++k) group_of_log[k] = used[k] ? group_count_++ : -1;
     if (static_cast<int>(groups_.size()) < group_count_) groups_.resize(group_count_);
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k <= kMaxSubsteps; ++k) {
         if (group_of_log[k] < 0) continue;
         SubstepGroup& g = groups_[group_of_log[k]];
-        g.substeps = 1 << k;
+        g.substeps = k;
         g.ctx = solver_context(m, h_, g.substeps);
         g.slots.clear(), g.solve2.clear(), g.solve3.clear(), g.relax2.clear(), g.bodies.clear();
         for (std::vector<int>* v :
@@ -179,7 +182,7 @@ void ContactStage::form_groups(const Model& m) {
     island_group_.resize(island_substeps_.size());
     for (std::size_t i = 0; i < island_substeps_.size(); ++i)
         island_group_[i] =
-            group_of_log[std::countr_zero(static_cast<unsigned>(island_substeps_[i]))];
+            group_of_log[island_substeps_[i]];
     for (int col = 0; col < colour_count_; ++col) {
         for (int c = colour_start_[col]; c < colour_start_[col + 1]; ++c) {
             const int island = island_of_[c];
@@ -209,17 +212,16 @@ void ContactStage::form_groups(const Model& m) {
         if (awake_[i] && !in_constraint_[i]) free_.push_back(i);
 }
 
-// The State's impulses are per step; a substep's are 1/n of them (exact: n is a power of two).
+// The State's impulses are per step; a substep's are 1/n of them (rounded once; exact when n is a
+// power of two).
 void ContactStage::scale_warm_start(bool to_substep) {
     for (std::size_t k = 0; k < manifolds_.size(); ++k) {
         const SolverManifold& c = manifolds_[k];
         const double n = island_substeps_[island_of_[k]];
-        const double f = to_substep ? 1.0 / n : n;
         for (int j = 0; j < c.count; ++j) {
             SolverPoint& p = points_[c.first + j];
-            p.normal_impulse *= f;
-            p.friction_impulse[0] *= f;
-            p.friction_impulse[1] *= f;
+            for (double* x : {&p.normal_impulse, &p.friction_impulse[0], &p.friction_impulse[1]})
+                *x = to_substep ? *x / n : *x * n;
         }
     }
 }

@@ -202,7 +202,7 @@ class ContactStage {
     std::vector<double> level_weight_, level_mass_;
     std::vector<double> island_need_;  // per island: substeps its loads and spin ask for
     std::vector<double> body_speed_;   // per body: its fastest point, m/s
-    std::vector<int> island_substeps_; // per island: the substeps it gets (a power of two)
+    std::vector<int> island_substeps_; // per island: the substeps it gets (1 .. 64)
     std::vector<std::uint8_t> island_solve_, island_relax_; // per island: sweeps per substep
     std::vector<int> island_group_;                         // per island: its group
     std::vector<SubstepGroup> groups_;
