@@ -181,8 +181,7 @@ void ContactStage::form_groups(const Model& m) {
     }
     island_group_.resize(island_substeps_.size());
     for (std::size_t i = 0; i < island_substeps_.size(); ++i)
-        island_group_[i] =
-            group_of_log[island_substeps_[i]];
+        island_group_[i] = group_of_log[island_substeps_[i]];
     for (int col = 0; col < colour_count_; ++col) {
         for (int c = colour_start_[col]; c < colour_start_[col + 1]; ++c) {
             const int island = island_of_[c];
