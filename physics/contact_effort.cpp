@@ -38,7 +38,6 @@
 #include "physics/contact_stage.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -164,13 +163,13 @@ void ContactStage::choose_effort(const Model& m, const State& s) {
 void ContactStage::form_groups(const Model& m) {
     int used[kMaxSubsteps + 1] = {}; // substep counts 1 .. kMaxSubsteps in use
     for (int n : island_substeps_) used[n] = 1;
-    int group_of_log[kMaxSubsteps + 1];
+    int group_of_count[kMaxSubsteps + 1];
     group_count_ = 0;
-    for (int k = 0; k <= kMaxSubsteps; ++k) group_of_log[k] = used[k] ? group_count_++ : -1;
+    for (int k = 0; k <= kMaxSubsteps; ++k) group_of_count[k] = used[k] ? group_count_++ : -1;
     if (static_cast<int>(groups_.size()) < group_count_) groups_.resize(group_count_);
     for (int k = 0; k <= kMaxSubsteps; ++k) {
-        if (group_of_log[k] < 0) continue;
-        SubstepGroup& g = groups_[group_of_log[k]];
+        if (group_of_count[k] < 0) continue;
+        SubstepGroup& g = groups_[group_of_count[k]];
         g.substeps = k;
         g.ctx = solver_context(m, h_, g.substeps);
         g.slots.clear(), g.solve2.clear(), g.solve3.clear(), g.relax2.clear(), g.bodies.clear();
@@ -181,7 +180,7 @@ void ContactStage::form_groups(const Model& m) {
     }
     island_group_.resize(island_substeps_.size());
     for (std::size_t i = 0; i < island_substeps_.size(); ++i)
-        island_group_[i] = group_of_log[island_substeps_[i]];
+        island_group_[i] = group_of_count[island_substeps_[i]];
     for (int col = 0; col < colour_count_; ++col) {
         for (int c = colour_start_[col]; c < colour_start_[col + 1]; ++c) {
             const int island = island_of_[c];
