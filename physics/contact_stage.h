@@ -130,7 +130,7 @@ class ContactStage {
     void scale_warm_start(bool to_substep);
     void substeps(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
     void free_flight(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool);
-    void predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g);
+    void predict(const Model& m, const State& s, ThreadPool& pool, const SubstepGroup& g);
     void solve(ThreadPool& pool, const SubstepGroup& g);
     void integrate_substep(const Model& m, State& s, IntegrateFn integrate, ThreadPool& pool,
                            const SubstepGroup& g);

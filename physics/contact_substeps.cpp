@@ -50,7 +50,8 @@ void ContactStage::free_flight(const Model& m, State& s, IntegrateFn integrate, 
 
 // a. Predict: the solver sees the velocities the loads would give at the substep's end. From here
 // to the integrator the velocities of the group's bodies live in solver_bodies_.
-void ContactStage::predict(const Model& m, State& s, ThreadPool& pool, const SubstepGroup& g) {
+void ContactStage::predict(const Model& m, const State& s, ThreadPool& pool,
+                           const SubstepGroup& g) {
     track_motion(m, s, pool, g);
     follow_bodies(pool, g);
     pool.for_ranges(static_cast<int>(g.bodies.size()), 512, [&](int begin, int end, int) {
