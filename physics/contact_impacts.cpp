@@ -61,8 +61,8 @@ bool resolve_impacts(const SolverManifold& c, const SolverPoint* points, PointAu
     // restitution 0), so the impact pass costs nothing in scenes without bounce.
     if (c.restitution == 0.0) return false;
     const Vec3& n = c.normal;
-    const double an = normal_acceleration(c, bodies);
     const double h = ctx.step_h, threshold = ctx.restitution_threshold;
+    double an = 0.0; // the relative normal acceleration, once a point approaches fast enough
     Velocity va = load(s, c.a), vb = load(s, c.b);
     bool any = false;
     for (int k = 0; k < c.count; ++k) {
@@ -70,6 +70,7 @@ bool resolve_impacts(const SolverManifold& c, const SolverPoint* points, PointAu
         PointAux& x = aux[k];
         const double vn = n.dot(relative_velocity(va, vb, p.ra, p.rb));
         if (vn >= -threshold) continue;
+        if (!any) an = normal_acceleration(c, bodies);
         const double s0 = std::max(x.separation0, 0.0);
         // Closes within the step? The gap at its end under the symplectic update the solver uses
         // (s0 + vn h + a h^2, at most 1/2 a h^2 from free flight), with 0.1 mm to spare: a pair
@@ -131,17 +132,36 @@ bool impact_in_step(const SolverManifold& c, const SolverPoint* points, const Po
 }
 
 // Sweeps in colour order, on the velocities at the start of the step, until no impact is left.
+// After the first sweep a constraint is looked at again only if one of its bodies changed
+// velocity since it last was (its own impulse included): with the same velocities it would find
+// the same nothing, so skipping it changes no bit. (Skipping, in the first sweep too, constraints
+// whose bodies were too slow for any point to approach at the threshold saved nothing measurable
+// in the sphere rain: its impacts stage went from 4.9 to 4.7 % of the step.)
 void ContactStage::impacts(const Model& m, State& s, ThreadPool& pool) {
     Stopwatch clock;
     impact_flags_.assign(pool.size(), 0);
+    impact_changed_.assign(m.body_count(), -1);
+    impact_seen_.resize(manifolds_.size());
+    const auto constraints = static_cast<std::int64_t>(manifolds_.size());
     stats_.impacts = 0;
     for (int sweep = 0; sweep < kImpactSweeps; ++sweep) {
         std::fill(impact_flags_.begin(), impact_flags_.end(), 0);
+        // Within a colour no two constraints share a moving body; the overflow colour runs in
+        // slot order on one thread, so "changed after it was looked at" is exact there too.
         for_each_colour(pool, [&](int begin, int end, int worker) {
-            for (int c = begin; c < end; ++c)
-                if (resolve_impacts(manifolds_[c], &points_[manifolds_[c].first],
-                                    &aux_[manifolds_[c].first], bodies_, ctx_, s))
-                    impact_flags_[worker] = 1;
+            for (int k = begin; k < end; ++k) {
+                const SolverManifold& c = manifolds_[k];
+                if (sweep > 0 && impact_changed_[c.a] < impact_seen_[k] &&
+                    impact_changed_[c.b] < impact_seen_[k])
+                    continue;
+                const std::int64_t now = sweep * constraints + k;
+                impact_seen_[k] = now;
+                if (!resolve_impacts(c, &points_[c.first], &aux_[c.first], bodies_, ctx_, s))
+                    continue;
+                impact_flags_[worker] = 1;
+                if (c.move_a) impact_changed_[c.a] = now;
+                if (c.move_b) impact_changed_[c.b] = now;
+            }
         });
         if (std::find(impact_flags_.begin(), impact_flags_.end(), 1) == impact_flags_.end()) break;
         ++stats_.impacts;

@@ -217,6 +217,9 @@ class ContactStage {
     std::vector<std::exception_ptr> integrate_errors_; // per worker
     std::vector<Quat> sleep_q_;
     std::vector<std::uint8_t> impact_flags_;
+    // Impact sweeps (contact_impacts.cpp): when each body's velocity last changed and when each
+    // constraint was last looked at, as sweep * constraints + slot.
+    std::vector<std::int64_t> impact_changed_, impact_seen_;
     std::vector<int> impact_count_, shifted_;
     std::vector<Vec3> shift_;
 
