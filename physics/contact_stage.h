@@ -182,8 +182,7 @@ class ContactStage {
     // Constraints in colour order: colour c is manifolds_[colour_start_[c] .. [c + 1]).
     std::vector<SolverManifold> manifolds_;
     std::vector<SolverPoint> points_;
-    std::vector<PointAux> aux_;      // per point of points_
-    std::vector<int> constraint_of_; // per manifold of next_: constraint or -1
+    std::vector<PointAux> aux_; // per point of points_
     std::vector<int> colour_of_, colour_start_, point_start_, cursor_;
     std::vector<std::uint64_t> colour_bits_;
     int colour_count_ = 0;
