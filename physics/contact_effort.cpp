@@ -29,11 +29,12 @@
 // the stability map's 1 mm), three where their masses differ by more than kHeavyRatio (a 100 kg
 // cube on a 1 kg one swayed 7 mm with two at 16 substeps, 0.02 mm with three); one relax sweep,
 // two where a manifold has several points (one sweep over a box's four corners takes the
-// push-out back unevenly and turns the box; docs/contacts.md). Two solve sweeps for single points
-// too, as until 2026-11-28, made the 8000-sphere rain 1.28x slower (20.1 against 25.8 steps/s)
-// for a deepest overlap of 0.079 instead of 0.091 mm, both within the 0.1 mm tolerance. Convergence-driven sweeping was measured and
-// not kept: stopping an island when a sweep changed its velocities by less than d / h spent 4.5
-// sweeps per contact in the sphere rain, where these counts spend 3 for a smaller penetration,
+// push-out back unevenly and turns the box; docs/contacts.md). Two solve sweeps for single
+// points too, as until 2026-11-28, made the 8000-sphere rain 1.28x slower (20.1 against 25.8
+// steps/s) for a deepest overlap of 0.079 instead of 0.091 mm, both within the 0.1 mm tolerance.
+// Convergence-driven sweeping was measured and not kept: stopping an island when a sweep changed
+// its velocities by less than d / h spent 4.5 sweeps per contact in the sphere rain, where these
+// counts then spent 3 for a smaller penetration (2.85 since single points take one solve sweep),
 // and let the stacks stop after one relax sweep and walk 4 mm in 10 s (docs/contacts.md).
 //
 // Fixed effort (the scene set world.substeps or world.iterations): one group of every constraint
