@@ -1,11 +1,11 @@
 // Effort on demand (issue 28; physics/contact_effort.cpp): each island of bodies in contact gets
 // the substeps its loads ask for, a contact's sag stays within the contact tolerance, and fixed
 // settings in a scene mean exactly what they say, with the bits they had before effort on demand.
-#include "support/measured.h"
 #include "physics/scenes/contact_scenes.h"
 #include "physics/scenes/sphere_rain.h"
 #include "physics/scenes/state_hash.h"
 #include "physics/step.h"
+#include "support/measured.h"
 
 #include <gtest/gtest.h>
 
