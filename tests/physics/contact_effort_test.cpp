@@ -18,6 +18,19 @@ namespace {
 
 constexpr double kH = 1.0 / 240.0;
 
+// A scene built and stepped by the library, as every test here needs it.
+struct SceneRun {
+    explicit SceneRun(const scenes::Scene& s, int threads = 1)
+        : model(build_model(s.world, s.bodies)), state(initial_state(model, s.bodies)),
+          ws(threads) {}
+    void steps(int count) {
+        for (int k = 0; k < count; ++k) step(model, state, ws);
+    }
+    const Model model;
+    State state;
+    StepWorkspace ws;
+};
+
 // The fewest whole substeps at which a contact of effective mass m_eff carrying F sags by at most
 // d: F / (m_eff omega^2) <= d with omega = 2 pi (1/4) n / h, twice against a support.
 int substeps_for_sag(double force, double m_eff, double d, bool support) {
@@ -37,11 +50,9 @@ TEST(ContactEffort, EachIslandGetsTheSubstepsItsLoadsAskFor) {
     ball.mass = 1.0;
     ball.position = Vec3(2.0, 0.0, 0.1);
     s.bodies.push_back(ball);
-    const Model model = build_model(s.world, s.bodies);
-    State state = initial_state(model, s.bodies);
-    StepWorkspace ws(1);
-    for (int k = 0; k < 240; ++k) step(model, state, ws);
-    const ContactEffort& e = ws.contacts.stats().effort;
+    SceneRun run(s);
+    run.steps(240);
+    const ContactEffort& e = run.ws.contacts.stats().effort;
     const int stack = substeps_for_sag(4 * 9.81 / 4, 1.0 / 8.0, kDefaultContactTolerance, false);
     const int lone = substeps_for_sag(9.81, 1.0, kDefaultContactTolerance, true);
     std::printf("[measured] islands %d, substeps %d..%d (expected %d and %d)\n", e.islands,
@@ -61,15 +72,13 @@ TEST(ContactEffort, TheSagStaysWithinTheTolerance) {
     for (const double d : {1e-3, 1e-4, 1e-5}) {
         scenes::Scene s = scenes::box_stack(10, 0.2, kH);
         s.world.contact.tolerance = d;
-        const Model model = build_model(s.world, s.bodies);
-        State state = initial_state(model, s.bodies);
-        StepWorkspace ws(1);
+        SceneRun run(s);
         double deepest = 0.0;
         for (int k = 0; k < 480; ++k) {
-            step(model, state, ws);
-            if (k >= 240) deepest = std::max(deepest, ws.contacts.stats().max_overlap);
+            run.steps(1);
+            if (k >= 240) deepest = std::max(deepest, run.ws.contacts.stats().max_overlap);
         }
-        const int substeps = ws.contacts.stats().effort.substeps_max;
+        const int substeps = run.ws.contacts.stats().effort.substeps_max;
         std::printf("[measured] tolerance %g m: deepest overlap %.3g m, %d substeps\n", d, deepest,
                     substeps);
         TUMBLE_MEASURED(deepest, d);
@@ -87,16 +96,13 @@ TEST(ContactEffort, TheSagStaysWithinTheTolerance) {
 // column of 10 cubes, whose contacts have four corners each, still takes two solve and two relax
 // sweeps.
 TEST(ContactEffort, SinglePointContactsTakeOneSolveSweepWithinTheTolerance) {
-    scenes::Scene s = scenes::sphere_rain(8);
-    const Model model = build_model(s.world, s.bodies);
-    State state = initial_state(model, s.bodies);
-    StepWorkspace ws(1);
+    SceneRun pile(scenes::sphere_rain(8));
     int sweeps = 0;
     for (int k = 0; k < 1200; ++k) {
-        step(model, state, ws);
-        sweeps = std::max(sweeps, ws.contacts.stats().effort.sweeps_max);
+        pile.steps(1);
+        sweeps = std::max(sweeps, pile.ws.contacts.stats().effort.sweeps_max);
     }
-    const double deepest = scenes::judge_rain(state).max_penetration;
+    const double deepest = scenes::judge_rain(pile.state).max_penetration;
     std::printf("[measured] pile of 512 spheres at 5 s: deepest overlap %.3g m, sweeps %d\n",
                 deepest, sweeps);
     TUMBLE_MEASURED(deepest, kDefaultContactTolerance);
@@ -104,12 +110,9 @@ TEST(ContactEffort, SinglePointContactsTakeOneSolveSweepWithinTheTolerance) {
     EXPECT_GT(deepest, 0.0); // the pile rests on its contacts
     EXPECT_EQ(sweeps, 2);
 
-    scenes::Scene column = scenes::box_stack(10, 0.2, kH);
-    const Model column_model = build_model(column.world, column.bodies);
-    State column_state = initial_state(column_model, column.bodies);
-    StepWorkspace column_ws(1);
-    for (int k = 0; k < 240; ++k) step(column_model, column_state, column_ws);
-    EXPECT_EQ(column_ws.contacts.stats().effort.sweeps_max, 4);
+    SceneRun column(scenes::box_stack(10, 0.2, kH));
+    column.steps(240);
+    EXPECT_EQ(column.ws.contacts.stats().effort.sweeps_max, 4);
 }
 
 // Fixed settings mean what they say: the 1000-sphere rain at 2 substeps with one solve and one
@@ -131,14 +134,12 @@ TEST(ContactEffort, FixedSettingsKeepTheirBits) {
             s.world.contact.iterations = f.iterations;
             s.world.contact.relax_iterations = f.relax;
             s.world.contact.parallel_min_bodies = 0;
-            const Model model = build_model(s.world, s.bodies);
-            State state = initial_state(model, s.bodies);
-            StepWorkspace ws(threads);
-            for (int k = 0; k < 300; ++k) step(model, state, ws);
-            EXPECT_EQ(scenes::state_hash(state), f.hash)
+            SceneRun run(s, threads);
+            run.steps(300);
+            EXPECT_EQ(scenes::state_hash(run.state), f.hash)
                 << f.substeps << "x" << f.iterations << "+" << f.relax << ", " << threads
                 << " threads";
-            const ContactEffort& e = ws.contacts.stats().effort;
+            const ContactEffort& e = run.ws.contacts.stats().effort;
             EXPECT_EQ(e.substeps_max, f.substeps > 0 ? f.substeps : 6);
             EXPECT_EQ(e.sweeps_max, f.iterations + f.relax);
         }
@@ -151,11 +152,9 @@ TEST(ContactEffort, AnyThreadCountGivesTheSameBits) {
     for (int threads = 1; threads <= 3; threads += 2) {
         scenes::Scene s = scenes::sphere_rain(10);
         s.world.contact.parallel_min_bodies = 0;
-        const Model model = build_model(s.world, s.bodies);
-        State state = initial_state(model, s.bodies);
-        StepWorkspace ws(threads);
-        for (int k = 0; k < 150; ++k) step(model, state, ws);
-        const std::uint64_t h = scenes::state_hash(state);
+        SceneRun run(s, threads);
+        run.steps(150);
+        const std::uint64_t h = scenes::state_hash(run.state);
         if (threads == 1) one = h;
         EXPECT_EQ(h, one) << threads << " threads";
     }
