@@ -167,8 +167,8 @@ TEST(ContactPhysics, FastBallStopsAtThinWall) {
     }
 }
 
-// A speculative contact that never closes applies nothing: two spheres at rest 5 mm apart (inside
-// the 1 cm speculative distance), without gravity, keep a manifold every step and stay exactly
+// A speculative contact that never closes applies nothing: two spheres at rest 1 mm apart (inside
+// the 2 mm speculative distance), without gravity, keep a manifold every step and stay exactly
 // where they are, with exactly zero velocity. The solver skips such points (no push, no friction
 // yet); a bias or a friction impulse that leaked into them would move the spheres.
 TEST(ContactPhysics, SpeculativeContactAtRestAppliesNothing) {
@@ -177,7 +177,7 @@ TEST(ContactPhysics, SpeculativeContactAtRestAppliesNothing) {
         scene.world.dt = dt;
         scene.world.gravity = Vec3::Zero();
         scene.world.contact.sleeping = false;
-        for (double x : {-0.1025, 0.1025}) {
+        for (double x : {-0.1005, 0.1005}) {
             BodyDef ball;
             ball.shape = Shape::sphere(0.1);
             ball.mass = 1.0;

@@ -96,8 +96,9 @@ TEST(ErrorEstimate, FreeFallErrorOfTheEulerMethodsIsGHTOverTwo) {
 
 // The ball of ball_drop (bottom 1 m above the ground) with symplectic Euler at h = 1/240 s. The
 // contact stage takes the ball from the start of the first step whose start has its gap
-// z_n - r = 1 - g h^2 n (n + 1) / 2 within the speculative margin 1 cm + h |v_n|, v_n = g h n
-// (physics/step.cpp, "find"); the estimate holds up to that time and keeps its value there,
+// z_n - r = 1 - g h^2 n (n + 1) / 2 within the speculative margin 2 mm + h |v_n| + h^2 g / 2,
+// v_n = g h n (physics/contact_find.cpp, pair_margin); the estimate holds up to that time and
+// keeps its value there,
 // g h t / 2.
 TEST(ErrorEstimate, BallDropStopsHoldingAtItsFirstContact) {
     const double h = 1.0 / 240;
@@ -105,7 +106,8 @@ TEST(ErrorEstimate, BallDropStopsHoldingAtItsFirstContact) {
     s.world.integrator = Integrator::SymplecticEuler;
     Sim sim(s);
     int n = 0;
-    while (1.0 - kG * h * h * n * (n + 1) / 2 > 0.01 + h * kG * h * n) ++n;
+    const double base = 0.002 + h * h * kG / 2; // the margin's terms other than h |v_n|
+    while (1.0 - kG * h * h * n * (n + 1) / 2 > base + h * kG * h * n) ++n;
     const double first_contact = n * h;             // the start of step n + 1
     const double touch = std::sqrt(2.0 * 1.0 / kG); // the exact free fall meets the ground
     const RunEstimate r = estimate_run(sim.model, sim.state, 480, 1);
@@ -117,7 +119,7 @@ TEST(ErrorEstimate, BallDropStopsHoldingAtItsFirstContact) {
     TUMBLE_MEASURED(ball.valid_until, first_contact);
     EXPECT_NEAR(ball.valid_until, first_contact, 1e-12);
     EXPECT_LT(ball.valid_until, touch);
-    EXPECT_LT(touch - ball.valid_until, (0.01 + h * kG * touch) / (kG * touch) + 2 * h);
+    EXPECT_LT(touch - ball.valid_until, (base + h * kG * touch) / (kG * touch) + 2 * h);
     // Kept from its last free-flight step: the closed-form error there, also its maximum.
     EXPECT_NEAR(ball.at.position, kG * h * first_contact / 2, 1e-9);
     EXPECT_NEAR(ball.max.position, kG * h * first_contact / 2, 1e-9);
