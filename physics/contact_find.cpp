@@ -19,11 +19,6 @@ std::uint32_t slot_hash(std::uint64_t key) {
     return static_cast<std::uint32_t>(key);
 }
 
-// Body i's acceleration from its loads, a = g s + F_applied / m (0 for a static body: 1/m = 0).
-Vec3 load_acceleration(const Model& m, int i) {
-    return m.inv_mass[i] * net_force(m, i);
-}
-
 // Speculative margin of a pair: how far the gap can close in one step, and the base distance for
 // what that does not predict (the impulses of the step's other contacts). The relative centre
 // moves by h u + 1/2 h^2 a (u = vB - vA, a = aB - aA from the loads, constant over the step), and
@@ -31,11 +26,13 @@ Vec3 load_acceleration(const Model& m, int i) {
 //   h (|u| + |wA| swingA + |wB| swingB) + 1/2 h^2 |a|.
 // Without the last term a ball falling onto the floor at h = 1/30 s could sink g h^2 / 2 = 5.4 mm
 // minus the base distance before its first contact.
-double pair_margin(const Model& m, const State& s, int a, int b, double h) {
+// `accel`: per body, a = g s + F_applied / m from its loads (0 for a static body).
+double pair_margin(const Model& m, const State& s, const std::vector<Vec3>& accel, int a, int b,
+                   double h) {
     const double rel = (s.v[b] - s.v[a]).norm();
     const double spin = s.w[a].norm() * m.swing[a] + s.w[b].norm() * m.swing[b];
-    const double accel = (load_acceleration(m, b) - load_acceleration(m, a)).norm();
-    return m.contact.speculative_distance + h * (rel + spin) + 0.5 * h * h * accel;
+    const double loads = (accel[b] - accel[a]).norm();
+    return m.contact.speculative_distance + h * (rel + spin) + 0.5 * h * h * loads;
 }
 
 // Last step's impulses at the point of manifold `o` (-1: none) with p's feature id, if any.
@@ -70,16 +67,18 @@ void ContactStage::sweep_bounds(const Model& m, const State& s, ThreadPool& pool
     pose_.resize(n);
     box_.resize(n);
     plane_margin_.resize(n);
+    load_accel_.resize(n);
     awake_.resize(n);
     pool.for_ranges(n, 256, [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i) {
             const bool dynamic = m.is_dynamic(i);
             awake_[i] = dynamic && !s.sleep.asleep[i];
             pose_[i] = shape_pose(m, s.x[i], s.q[i], i);
+            load_accel_[i] = dynamic ? Vec3(m.inv_mass[i] * net_force(m, i)) : Vec3::Zero();
             // Grow the box by half the base margin and by the distance the body can move (its
             // terms of pair_margin: the boxes of a pair within its margin overlap).
             const double reach = dynamic ? h_ * (s.v[i].norm() + s.w[i].norm() * m.swing[i]) +
-                                               0.5 * h_ * h_ * load_acceleration(m, i).norm()
+                                               0.5 * h_ * h_ * load_accel_[i].norm()
                                          : 0.0;
             plane_margin_[i] = m.contact.speculative_distance + reach;
             if (m.shape[i].kind == ShapeKind::Plane) continue;
@@ -137,7 +136,7 @@ void ContactStage::narrow_phase(const Model& m, const State& s, ThreadPool& pool
         Manifold man;
         for (std::uint64_t key : pairs) {
             const int a = pair_first(key), b = pair_second(key);
-            collide(m, a, pose_[a], b, pose_[b], pair_margin(m, s, a, b, h_), man);
+            collide(m, a, pose_[a], b, pose_[b], pair_margin(m, s, load_accel_, a, b, h_), man);
             if (man.count == 0) continue;
             const int o = old_manifold(key);
             out.pair.push_back(key);

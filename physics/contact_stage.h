@@ -165,6 +165,7 @@ class ContactStage {
     std::vector<ShapePose> pose_;
     std::vector<Aabb> box_;
     std::vector<double> plane_margin_;
+    std::vector<Vec3> load_accel_;    // a = g s + F_applied / m (0 for a static body), m/s^2
     std::vector<std::uint8_t> awake_; // dynamic and not asleep
     std::vector<std::uint8_t> in_constraint_;
     SolverBodies bodies_;
