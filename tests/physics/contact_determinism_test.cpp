@@ -108,8 +108,8 @@ TEST(ContactDeterminism, CopiedStateContinuesBitIdentically) {
 
 // The pinned result. What is promised: same source, same compiler and flags (-ffp-contract=off,
 // no fast-math), same libm, any thread count (the threads test above): same bits. Measured
-// 0x3c92483a0d847146 in the Release build (GCC 12, -O3) and the same in the asan build (-O2 -g,
-// ASan + UBSan): without
+// 0x90c3a07cab17a01c in the Release build (GCC 12, -O3) and the same in the asan build (-O2 -g,
+// ASan + UBSan; 2026-11-28, as 0x3c92483a0d847146 was at issue 13): without
 // -ffast-math GCC neither contracts nor reorders floating-point operations at any level, so a
 // different hash between optimisation levels would point at undefined behaviour. Other compilers or
 // libms are not promised. If a deliberate change to the physics moves it, update the constant and
