@@ -66,8 +66,9 @@ struct ContactSettings {
     // other contacts. Until 2026-11-28 it was 1 cm (2 cm is Box2D's and Jolt's default for bodies
     // of a metre). At 2 mm the shifted rain of 1000 spheres of 5 cm steps 1.16-1.21x faster, at
     // 8000 1.14x (fewer pairs: fewer constraints to prepare and sweep, smaller islands), its
-    // deepest overlap no deeper (0.098 and 0.072 mm against 0.098 and 0.091), and every case of
-    // the contact stability map measures the same (docs/contacts.md). 1 mm gained another 2%.
+    // deepest overlap within the tolerance (0.097 and 0.096 mm with the margins' loads term,
+    // against 0.098 and 0.091), and every case of the contact stability map measures the same
+    // (docs/contacts.md). 1 mm gained another 2%.
     double speculative_distance = 0.002;
     double sleep_speed = 0.05;  // m/s: a body slower than this (at any point) may sleep
     double time_to_sleep = 0.5; // s
