@@ -30,6 +30,15 @@ inline BodyView body_b(const SolverManifold& c) {
     return {c.inv_mass_b, c.inv_i_b, c.inertia_b, c.move_b != 0, c.rotates_b != 0};
 }
 
+// A sphere's contact point lies on the normal through its centre (collide_round.cpp,
+// collide_hull_round.cpp: the point is the centre moved along n), so r = (n.r) n and, for the
+// normal, n.(w x r) = w.(r x n) = 0 and r x (lambda n) = 0. With both bodies spheres, or a sphere
+// and a body that does not move (no turning anchors: BodyView::rotates is false for exactly those),
+// the normal row is linear in the velocities: vn = n.(vB - vA), k = 1/mA + 1/mB.
+inline bool linear_normal_row(const BodyView& a, const BodyView& b) {
+    return !a.rotates && !b.rotates;
+}
+
 // I_w^-1 v
 inline Vec3 inv_inertia_times(const BodyView& b, const Vec3& v) {
     return b.inv_inertia ? Vec3(*b.inv_inertia * v) : Vec3(b.inv_i * v);

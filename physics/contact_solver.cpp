@@ -21,9 +21,8 @@ namespace {
 
 // 1/k along n and the tangent masses of point p at its current anchors.
 void point_masses(const SolverManifold& c, SolverPoint& p, const BodyView& A, const BodyView& B) {
-    // Spheres (and static bodies) have no angular term along n (solve_manifold).
-    p.normal_mass = 1.0 / (!A.rotates && !B.rotates ? A.inv_mass + B.inv_mass
-                                                    : effective_mass(A, B, p.ra, p.rb, c.normal));
+    p.normal_mass = 1.0 / (linear_normal_row(A, B) ? A.inv_mass + B.inv_mass
+                                                   : effective_mass(A, B, p.ra, p.rb, c.normal));
     const Vec3 a1 = p.ra.cross(c.t1), a2 = p.ra.cross(c.t2);
     const Vec3 b1 = p.rb.cross(c.t1), b2 = p.rb.cross(c.t2);
     const Vec3 ia1 = inv_inertia_times(A, a1), ib1 = inv_inertia_times(B, b1);
@@ -119,12 +118,10 @@ void solve_manifold(const SolverManifold& c, SolverPoint* points, const SolverCo
     const Vec3& da = sb[c.a].delta;
     const Vec3& db = sb[c.b].delta;
 
-    // Non-penetration. A sphere's anchor lies on the normal through its centre (r = -|r| n for A),
-    // so n . (w x r) = w . (r x n) = 0 and r x (lambda n) = 0: the normal row neither reads nor
-    // changes a sphere's spin. Between two spheres (or a sphere and a static body) the row is
-    // linear, vn = n . (vB - vA), and only the velocities take the impulse; exact, where the
-    // general form adds rounding-level angular terms (point_masses drops them from k as well).
-    const bool linear = !c.rotates_a && !c.rotates_b;
+    // Non-penetration. Between spheres (or a sphere and a static body) the row neither reads nor
+    // changes a spin (linear_normal_row): exact, where the general form adds rounding-level
+    // angular terms.
+    const bool linear = linear_normal_row(A, B);
     for (int k = 0; k < c.count; ++k) {
         SolverPoint& p = points[k];
         const double sep = p.base_separation + n.dot(db + p.rb - da - p.ra);
